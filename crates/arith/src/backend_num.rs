@@ -1,0 +1,141 @@
+//! The pure-Rust big-integer kernel (num-bigint): the default build.
+
+use num_bigint::{BigInt, BigUint, Sign};
+use num_integer::Integer as _;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+pub(crate) type Inner = BigInt;
+
+#[inline]
+pub(crate) fn from_i64(v: i64) -> Inner {
+    BigInt::from(v)
+}
+#[inline]
+pub(crate) fn from_u64(v: u64) -> Inner {
+    BigInt::from(v)
+}
+#[inline]
+pub(crate) fn is_zero(a: &Inner) -> bool {
+    a.is_zero()
+}
+#[inline]
+pub(crate) fn signum(a: &Inner) -> i32 {
+    match a.sign() {
+        Sign::Minus => -1,
+        Sign::NoSign => 0,
+        Sign::Plus => 1,
+    }
+}
+#[inline]
+pub(crate) fn bits(a: &Inner) -> u64 {
+    a.bits()
+}
+#[inline]
+pub(crate) fn abs(a: &Inner) -> Inner {
+    a.abs()
+}
+#[inline]
+pub(crate) fn neg(a: &Inner) -> Inner {
+    -a
+}
+#[inline]
+pub(crate) fn add(a: &Inner, b: &Inner) -> Inner {
+    a + b
+}
+#[inline]
+pub(crate) fn sub(a: &Inner, b: &Inner) -> Inner {
+    a - b
+}
+#[inline]
+pub(crate) fn mul(a: &Inner, b: &Inner) -> Inner {
+    a * b
+}
+#[inline]
+pub(crate) fn mul_i64(a: &Inner, b: i64) -> Inner {
+    a * b
+}
+#[inline]
+pub(crate) fn add_assign(a: &mut Inner, b: &Inner) {
+    *a += b;
+}
+#[inline]
+pub(crate) fn sub_assign(a: &mut Inner, b: &Inner) {
+    *a -= b;
+}
+#[inline]
+pub(crate) fn mul_assign(a: &mut Inner, b: &Inner) {
+    *a *= b;
+}
+#[inline]
+pub(crate) fn add_mul(acc: &mut Inner, b: &Inner, c: &Inner) {
+    *acc += b * c;
+}
+#[inline]
+pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
+    a / b
+}
+#[inline]
+pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {
+    a.div_rem(b)
+}
+#[inline]
+pub(crate) fn div_floor(a: &Inner, b: &Inner) -> Inner {
+    a.div_floor(b)
+}
+#[inline]
+pub(crate) fn gcd(a: &Inner, b: &Inner) -> Inner {
+    a.gcd(b)
+}
+#[inline]
+pub(crate) fn shl(a: &Inner, k: u64) -> Inner {
+    a << k
+}
+#[inline]
+pub(crate) fn shr_floor(a: &Inner, k: u64) -> Inner {
+    // num-bigint's >> on negatives rounds toward -inf.
+    a >> k
+}
+#[inline]
+pub(crate) fn trailing_zeros(a: &Inner) -> Option<u64> {
+    a.trailing_zeros()
+}
+#[inline]
+pub(crate) fn pow(a: &Inner, e: u32) -> Inner {
+    num_traits::Pow::pow(a, e)
+}
+#[inline]
+pub(crate) fn to_i64(a: &Inner) -> Option<i64> {
+    a.to_i64()
+}
+#[inline]
+pub(crate) fn low_u64_of_abs(a: &Inner) -> u64 {
+    a.magnitude().iter_u64_digits().next().unwrap_or(0)
+}
+#[inline]
+pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {
+    let r = (a.magnitude() % p).to_u64().unwrap_or(0);
+    if a.sign() == Sign::Minus && r != 0 {
+        p - r
+    } else {
+        r
+    }
+}
+pub(crate) fn to_u64_limbs(a: &Inner) -> (bool, Vec<u64>) {
+    (a.sign() == Sign::Minus, a.magnitude().to_u64_digits())
+}
+pub(crate) fn from_u64_limbs(negative: bool, limbs: &[u64]) -> Inner {
+    let mut halves = Vec::with_capacity(limbs.len() * 2);
+    for &l in limbs {
+        halves.push(l as u32);
+        halves.push((l >> 32) as u32);
+    }
+    let mag = BigUint::new(halves);
+    let s = if negative { Sign::Minus } else { Sign::Plus };
+    BigInt::from_biguint(s, mag)
+}
+pub(crate) fn parse_decimal(s: &str) -> Option<Inner> {
+    BigInt::parse_bytes(s.as_bytes(), 10)
+}
+pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    std::fmt::Display::fmt(a, f)
+}

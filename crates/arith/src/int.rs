@@ -1,0 +1,372 @@
+//! [`Int`]: an arbitrary-precision integer whose kernel is chosen at build
+//! time (num-bigint by default, GMP through rug with the `gmp` feature).
+//!
+//! Every crate above this one sees only [`Int`]; the two kernels pass the
+//! same tests.
+
+#[cfg(feature = "gmp")]
+use crate::backend_gmp as k;
+#[cfg(not(feature = "gmp"))]
+use crate::backend_num as k;
+
+use std::cmp::Ordering;
+use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// An exact integer of any size.
+///
+/// ```
+/// use ccd_arith::Int;
+/// let a = Int::from(6) * Int::from(7);
+/// assert_eq!(a.to_string(), "42");
+/// assert_eq!(a.gcd(&Int::from(35)), Int::from(7));
+/// ```
+#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct Int(pub(crate) k::Inner);
+
+impl Int {
+    /// Zero.
+    #[inline]
+    pub fn zero() -> Int {
+        Int(k::from_i64(0))
+    }
+    /// One.
+    #[inline]
+    pub fn one() -> Int {
+        Int(k::from_i64(1))
+    }
+    /// From a machine integer.
+    #[inline]
+    pub fn from_i64(v: i64) -> Int {
+        Int(k::from_i64(v))
+    }
+    /// From an unsigned machine integer.
+    #[inline]
+    pub fn from_u64(v: u64) -> Int {
+        Int(k::from_u64(v))
+    }
+    /// `self == 0`.
+    #[inline]
+    pub fn is_zero(&self) -> bool {
+        k::is_zero(&self.0)
+    }
+    /// −1, 0 or 1.
+    #[inline]
+    pub fn signum(&self) -> i32 {
+        k::signum(&self.0)
+    }
+    /// `self > 0`.
+    #[inline]
+    pub fn is_positive(&self) -> bool {
+        self.signum() > 0
+    }
+    /// `self < 0`.
+    #[inline]
+    pub fn is_negative(&self) -> bool {
+        self.signum() < 0
+    }
+    /// `self == 1`.
+    #[inline]
+    pub fn is_one(&self) -> bool {
+        self.to_i64() == Some(1)
+    }
+    /// Number of bits of `|self|` (0 for zero).
+    #[inline]
+    pub fn bits(&self) -> u64 {
+        k::bits(&self.0)
+    }
+    /// `|self|`.
+    #[inline]
+    pub fn abs(&self) -> Int {
+        Int(k::abs(&self.0))
+    }
+    /// `self · v` for a machine integer `v`.
+    #[inline]
+    pub fn mul_i64(&self, v: i64) -> Int {
+        Int(k::mul_i64(&self.0, v))
+    }
+    /// `self += b · c`, without a temporary where the kernel allows it.
+    #[inline]
+    pub fn add_mul(&mut self, b: &Int, c: &Int) {
+        k::add_mul(&mut self.0, &b.0, &c.0)
+    }
+    /// Exact quotient `self / d`; the caller guarantees `d | self`
+    /// (checked in debug builds).
+    #[inline]
+    pub fn div_exact(&self, d: &Int) -> Int {
+        let (q, r) = k::div_rem_trunc(&self.0, &d.0);
+        debug_assert!(k::is_zero(&r), "div_exact: {self} is not divisible by {d}");
+        Int(q)
+    }
+    /// Quotient rounded toward zero.
+    #[inline]
+    pub fn div_trunc(&self, d: &Int) -> Int {
+        Int(k::div_trunc(&self.0, &d.0))
+    }
+    /// Quotient and remainder, quotient rounded toward zero.
+    #[inline]
+    pub fn div_rem_trunc(&self, d: &Int) -> (Int, Int) {
+        let (q, r) = k::div_rem_trunc(&self.0, &d.0);
+        (Int(q), Int(r))
+    }
+    /// Quotient rounded toward −∞.
+    #[inline]
+    pub fn div_floor(&self, d: &Int) -> Int {
+        Int(k::div_floor(&self.0, &d.0))
+    }
+    /// `d | self` (with `d ≠ 0`).
+    #[inline]
+    pub fn is_divisible_by(&self, d: &Int) -> bool {
+        k::is_zero(&k::div_rem_trunc(&self.0, &d.0).1)
+    }
+    /// Non-negative greatest common divisor (`gcd(0, 0) = 0`).
+    #[inline]
+    pub fn gcd(&self, other: &Int) -> Int {
+        Int(k::gcd(&self.0, &other.0))
+    }
+    /// `self · 2^s`.
+    #[inline]
+    pub fn shl(&self, s: u64) -> Int {
+        Int(k::shl(&self.0, s))
+    }
+    /// `⌊self / 2^s⌋`.
+    #[inline]
+    pub fn shr_floor(&self, s: u64) -> Int {
+        Int(k::shr_floor(&self.0, s))
+    }
+    /// The exponent of the largest power of two dividing `self` (`None` for zero).
+    #[inline]
+    pub fn trailing_zeros(&self) -> Option<u64> {
+        k::trailing_zeros(&self.0)
+    }
+    /// `self^e`.
+    #[inline]
+    pub fn pow(&self, e: u32) -> Int {
+        Int(k::pow(&self.0, e))
+    }
+    /// The value as an `i64`, if it fits.
+    #[inline]
+    pub fn to_i64(&self) -> Option<i64> {
+        k::to_i64(&self.0)
+    }
+    /// `self mod p` in `[0, p)`, for `p > 0`.
+    #[inline]
+    pub fn mod_u64(&self, p: u64) -> u64 {
+        k::mod_u64(&self.0, p)
+    }
+    /// Sign and magnitude as little-endian 64-bit limbs.
+    pub fn to_u64_limbs(&self) -> (bool, Vec<u64>) {
+        k::to_u64_limbs(&self.0)
+    }
+    /// Inverse of [`Int::to_u64_limbs`].
+    pub fn from_u64_limbs(negative: bool, limbs: &[u64]) -> Int {
+        Int(k::from_u64_limbs(negative, limbs))
+    }
+    /// Parses an optionally signed string of decimal digits.
+    pub fn parse_decimal(s: &str) -> Option<Int> {
+        let body = s.strip_prefix(['-', '+']).unwrap_or(s);
+        if body.is_empty() || !body.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        k::parse_decimal(s.strip_prefix('+').unwrap_or(s)).map(Int)
+    }
+    /// `10^e`.
+    pub fn pow10(e: u32) -> Int {
+        Int::from_i64(10).pow(e)
+    }
+    /// `(m, e)` with `|self| = m · 2^e + r`, `0 <= r < 2^e`, and `m < 2^64`
+    /// holding the leading bits of `|self|`; `e = 0` when `|self| < 2^64`.
+    pub fn top_bits(&self) -> (u64, u64) {
+        let b = self.bits();
+        if b <= 64 {
+            (k::low_u64_of_abs(&self.0), 0)
+        } else {
+            let e = b - 64;
+            (k::low_u64_of_abs(&k::shr_floor(&k::abs(&self.0), e)), e)
+        }
+    }
+    /// A nearest-ish `f64` (not certified; see [`crate::Interval::from_int`]).
+    pub fn to_f64(&self) -> f64 {
+        let (m, e) = self.top_bits();
+        let v = (m as f64) * 2f64.powi(e.min(2000) as i32);
+        if self.is_negative() {
+            -v
+        } else {
+            v
+        }
+    }
+}
+
+impl std::fmt::Display for Int {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        k::fmt(&self.0, f)
+    }
+}
+impl std::fmt::Debug for Int {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        k::fmt(&self.0, f)
+    }
+}
+
+impl From<i64> for Int {
+    fn from(v: i64) -> Int {
+        Int::from_i64(v)
+    }
+}
+impl From<i32> for Int {
+    fn from(v: i32) -> Int {
+        Int::from_i64(v.into())
+    }
+}
+impl From<u64> for Int {
+    fn from(v: u64) -> Int {
+        Int::from_u64(v)
+    }
+}
+
+impl PartialEq<i64> for Int {
+    fn eq(&self, other: &i64) -> bool {
+        self.to_i64() == Some(*other)
+    }
+}
+impl PartialOrd<i64> for Int {
+    fn partial_cmp(&self, other: &i64) -> Option<Ordering> {
+        Some(self.cmp(&Int::from_i64(*other)))
+    }
+}
+
+/// Implements a binary operator for all four owned/borrowed combinations
+/// through one kernel function.
+macro_rules! binop {
+    ($tr:ident, $m:ident, $f:path) => {
+        impl $tr<&Int> for &Int {
+            type Output = Int;
+            #[inline]
+            fn $m(self, o: &Int) -> Int {
+                Int($f(&self.0, &o.0))
+            }
+        }
+        impl $tr<Int> for Int {
+            type Output = Int;
+            #[inline]
+            fn $m(self, o: Int) -> Int {
+                Int($f(&self.0, &o.0))
+            }
+        }
+        impl $tr<&Int> for Int {
+            type Output = Int;
+            #[inline]
+            fn $m(self, o: &Int) -> Int {
+                Int($f(&self.0, &o.0))
+            }
+        }
+        impl $tr<Int> for &Int {
+            type Output = Int;
+            #[inline]
+            fn $m(self, o: Int) -> Int {
+                Int($f(&self.0, &o.0))
+            }
+        }
+    };
+}
+binop!(Add, add, k::add);
+binop!(Sub, sub, k::sub);
+binop!(Mul, mul, k::mul);
+
+macro_rules! assignop {
+    ($tr:ident, $m:ident, $f:path) => {
+        impl $tr<&Int> for Int {
+            #[inline]
+            fn $m(&mut self, o: &Int) {
+                $f(&mut self.0, &o.0)
+            }
+        }
+        impl $tr<Int> for Int {
+            #[inline]
+            fn $m(&mut self, o: Int) {
+                $f(&mut self.0, &o.0)
+            }
+        }
+    };
+}
+assignop!(AddAssign, add_assign, k::add_assign);
+assignop!(SubAssign, sub_assign, k::sub_assign);
+assignop!(MulAssign, mul_assign, k::mul_assign);
+
+impl Neg for Int {
+    type Output = Int;
+    #[inline]
+    fn neg(self) -> Int {
+        Int(k::neg(&self.0))
+    }
+}
+impl Neg for &Int {
+    type Output = Int;
+    #[inline]
+    fn neg(self) -> Int {
+        Int(k::neg(&self.0))
+    }
+}
+
+impl std::iter::Sum for Int {
+    fn sum<I: Iterator<Item = Int>>(iter: I) -> Int {
+        iter.fold(Int::zero(), |a, b| a + b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn big(s: &str) -> Int {
+        Int::parse_decimal(s).unwrap()
+    }
+
+    #[test]
+    fn limbs_round_trip() {
+        for s in ["0", "1", "-1", "18446744073709551616", "-340282366920938463463374607431768211457"] {
+            let v = big(s);
+            let (neg, l) = v.to_u64_limbs();
+            assert_eq!(Int::from_u64_limbs(neg, &l), v, "{s}");
+        }
+    }
+
+    #[test]
+    fn floor_ops_round_toward_minus_infinity() {
+        assert_eq!(Int::from(-7).shr_floor(1), Int::from(-4));
+        assert_eq!(Int::from(-7).div_floor(&Int::from(2)), Int::from(-4));
+        assert_eq!(Int::from(-7).div_trunc(&Int::from(2)), Int::from(-3));
+        assert_eq!(Int::from(-7).mod_u64(5), 3);
+    }
+
+    #[test]
+    fn parse_rejects_junk() {
+        for s in ["", "-", "1.5", "1e3", " 1", "0x10"] {
+            assert!(Int::parse_decimal(s).is_none(), "{s}");
+        }
+        assert_eq!(big("+12"), Int::from(12));
+    }
+
+    proptest! {
+        #[test]
+        fn ring_identities(a in any::<i64>(), b in any::<i64>(), c in any::<i64>()) {
+            let (x, y, z) = (Int::from(a), Int::from(b), Int::from(c));
+            prop_assert_eq!(&x * &(&y + &z), &x * &y + &x * &z);
+            let mut acc = x.clone();
+            acc.add_mul(&y, &z);
+            prop_assert_eq!(acc, &x + &(&y * &z));
+            let p = &x * &y;
+            if b != 0 { prop_assert_eq!(p.div_exact(&y), x.clone()); }
+            prop_assert_eq!(x.to_string(), a.to_string());
+        }
+
+        #[test]
+        fn top_bits_bound(a in any::<i64>(), s in 0u64..300) {
+            let x = Int::from(a).shl(s);
+            let (m, e) = x.top_bits();
+            let lo = Int::from_u64(m).shl(e);
+            let hi = Int::from_u64(m).shl(e) + Int::one().shl(e);
+            prop_assert!(lo <= x.abs() && x.abs() < hi);
+        }
+    }
+}

@@ -1,0 +1,239 @@
+//! [`Interval`]: closed `f64` intervals with outward rounding, the cheap
+//! certified filter in front of exact arithmetic.
+//!
+//! Every operation returns an interval that contains the exact result of the
+//! operation applied to any points of the operands: the float result
+//! (rounded to nearest) is widened by one ulp on each side, which is enough
+//! since round-to-nearest is off by at most half an ulp.
+
+use crate::{Int, Rat};
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A closed interval `[lo, hi]` of reals, `lo <= hi`, possibly unbounded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    /// Lower bound.
+    pub lo: f64,
+    /// Upper bound.
+    pub hi: f64,
+}
+
+/// Scales `x` by `2^k` and widens outward when the result may be inexact.
+fn scale2(x: f64, k: i64) -> (f64, f64) {
+    if x == 0.0 {
+        return (0.0, 0.0);
+    }
+    let mut v = x;
+    let mut rest = k;
+    while rest != 0 {
+        let step = rest.clamp(-1000, 1000);
+        v *= 2f64.powi(step as i32);
+        rest -= step;
+    }
+    let exact = v.is_finite() && v != 0.0 && v.abs() >= f64::MIN_POSITIVE;
+    if exact {
+        (v, v)
+    } else {
+        (v.next_down(), v.next_up())
+    }
+}
+
+impl Interval {
+    /// The whole real line.
+    pub const ENTIRE: Interval = Interval { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
+
+    /// The point `[x, x]`.
+    pub fn point(x: f64) -> Interval {
+        Interval { lo: x, hi: x }
+    }
+    /// `[lo, hi]`; NaN bounds give [`Interval::ENTIRE`].
+    pub fn new(lo: f64, hi: f64) -> Interval {
+        if lo.is_nan() || hi.is_nan() {
+            Interval::ENTIRE
+        } else {
+            Interval { lo, hi }
+        }
+    }
+    /// A certified enclosure of `x · 2^(-shift)`.
+    pub fn from_int_scaled(x: &Int, shift: i64) -> Interval {
+        let (m, e) = x.top_bits();
+        let (lo, hi) = if e == 0 && m < (1u64 << 53) {
+            let (a, b) = scale2(m as f64, -shift);
+            (a, b)
+        } else {
+            // |x| in [m, m + 1] · 2^e.
+            let (a, _) = scale2((m as f64).next_down(), e as i64 - shift);
+            let (_, b) = scale2(((m as f64) + 1.0).next_up(), e as i64 - shift);
+            (a.next_down().max(0.0), b.next_up())
+        };
+        if x.is_negative() {
+            Interval { lo: -hi, hi: -lo }
+        } else {
+            Interval { lo, hi }
+        }
+    }
+    /// A certified enclosure of an integer.
+    pub fn from_int(x: &Int) -> Interval {
+        Interval::from_int_scaled(x, 0)
+    }
+    /// A certified enclosure of a rational.
+    pub fn from_rat(x: &Rat) -> Interval {
+        let n = Interval::from_int(x.numer());
+        let d = Interval::from_int(x.denom());
+        n.div_positive(d)
+    }
+    /// `self / d` for an interval `d` of positive numbers.
+    pub fn div_positive(self, d: Interval) -> Interval {
+        debug_assert!(d.lo > 0.0);
+        let c = [self.lo / d.lo, self.lo / d.hi, self.hi / d.lo, self.hi / d.hi];
+        Interval::hull_widened(c)
+    }
+    fn hull_widened(c: [f64; 4]) -> Interval {
+        if c.iter().any(|v| v.is_nan()) {
+            return Interval::ENTIRE;
+        }
+        let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = c.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Interval { lo: lo.next_down(), hi: hi.next_up() }
+    }
+    /// Midpoint (not certified).
+    pub fn mid(&self) -> f64 {
+        0.5 * self.lo + 0.5 * self.hi
+    }
+    /// Width `hi − lo` (rounded up).
+    pub fn width(&self) -> f64 {
+        (self.hi - self.lo).next_up()
+    }
+    /// `0 ∈ self`.
+    pub fn contains_zero(&self) -> bool {
+        self.lo <= 0.0 && self.hi >= 0.0
+    }
+    /// The sign of every point of the interval: `Some(±1)` when it excludes
+    /// zero, `Some(0)` for the exact point zero, `None` when undecided.
+    pub fn sign(&self) -> Option<i32> {
+        if self.lo > 0.0 {
+            Some(1)
+        } else if self.hi < 0.0 {
+            Some(-1)
+        } else if self.lo == 0.0 && self.hi == 0.0 {
+            Some(0)
+        } else {
+            None
+        }
+    }
+    /// Smallest interval holding both.
+    pub fn hull(&self, o: &Interval) -> Interval {
+        Interval { lo: self.lo.min(o.lo), hi: self.hi.max(o.hi) }
+    }
+    /// `self²` (tighter than `self · self` when the interval holds zero).
+    pub fn square(self) -> Interval {
+        let m = self * self;
+        if self.contains_zero() {
+            Interval { lo: 0.0, hi: m.hi }
+        } else {
+            Interval { lo: m.lo.max(0.0), hi: m.hi }
+        }
+    }
+    /// `(self + o) / 2`: the de Casteljau step.
+    pub fn average(self, o: Interval) -> Interval {
+        let s = self + o;
+        Interval { lo: s.lo * 0.5, hi: s.hi * 0.5 }.widen_if_tiny()
+    }
+    fn widen_if_tiny(self) -> Interval {
+        // Halving is exact except in the subnormal range.
+        let lo = if self.lo != 0.0 && self.lo.abs() < f64::MIN_POSITIVE { self.lo.next_down() } else { self.lo };
+        let hi = if self.hi != 0.0 && self.hi.abs() < f64::MIN_POSITIVE { self.hi.next_up() } else { self.hi };
+        Interval { lo, hi }
+    }
+}
+
+impl Add for Interval {
+    type Output = Interval;
+    fn add(self, o: Interval) -> Interval {
+        Interval::new((self.lo + o.lo).next_down(), (self.hi + o.hi).next_up())
+    }
+}
+impl Sub for Interval {
+    type Output = Interval;
+    fn sub(self, o: Interval) -> Interval {
+        Interval::new((self.lo - o.hi).next_down(), (self.hi - o.lo).next_up())
+    }
+}
+impl Neg for Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        Interval { lo: -self.hi, hi: -self.lo }
+    }
+}
+impl Mul for Interval {
+    type Output = Interval;
+    fn mul(self, o: Interval) -> Interval {
+        let c = [self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi];
+        if c.iter().any(|v| v.is_nan()) {
+            // 0 · ∞: the operands' product set is still bounded by what we
+            // can say; be safe.
+            return Interval::ENTIRE;
+        }
+        Interval::hull_widened(c)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    #[test]
+    fn huge_integers_are_enclosed() {
+        let x = Int::from(3).pow(700); // about 2^1109: beyond f64
+        let i = Interval::from_int_scaled(&x, 1100);
+        let approx = (700.0 * 3f64.log2() - 1100.0).exp2();
+        assert!(i.lo <= approx * (1.0 + 1e-9) && i.hi >= approx * (1.0 - 1e-9), "{i:?} {approx}");
+        assert!(Interval::from_int(&x).hi.is_infinite());
+        assert_eq!(Interval::from_int(&-x).sign(), Some(-1));
+    }
+
+    proptest! {
+        #[test]
+        fn arithmetic_encloses_exact_results(a in -1_000_000i64..1_000_000, b in -1_000_000i64..1_000_000, c in 1i64..1000) {
+            let (x, y) = (Rat::from_frac(a, c), Rat::from_frac(b, 7));
+            let (ix, iy) = (Interval::from_rat(&x), Interval::from_rat(&y));
+            for (iv, exact) in [(ix + iy, &x + &y), (ix - iy, &x - &y), (ix * iy, &x * &y), (ix.square(), &x * &x)] {
+                let e = Interval::from_rat(&exact);
+                prop_assert!(iv.lo <= e.hi && e.lo <= iv.hi);
+                prop_assert!(iv.lo <= exact.to_f64() + 1e-300 && exact.to_f64() - 1e-300 <= iv.hi);
+            }
+        }
+
+        #[test]
+        fn int_enclosure_holds(a in any::<i64>(), s in 0u64..200, sh in -50i64..1200) {
+            let x = Int::from(a).shl(s) + Int::from(a);
+            let i = Interval::from_int_scaled(&x, sh);
+            // Compare exactly: lo·2^sh <= x <= hi·2^sh, using rationals.
+            let to_rat = |v: f64| -> Option<Rat> {
+                if !v.is_finite() { return None; }
+                let (m, e) = decompose(v);
+                Some(Rat::from(m).mul_pow2(e + sh))
+            };
+            let xr = Rat::from(x.clone());
+            if let Some(l) = to_rat(i.lo) { prop_assert!(l <= xr); }
+            if let Some(h) = to_rat(i.hi) { prop_assert!(xr <= h); }
+        }
+    }
+
+    /// `v = m · 2^e` exactly.
+    fn decompose(v: f64) -> (i64, i64) {
+        if v == 0.0 {
+            return (0, 0);
+        }
+        let bits = v.to_bits();
+        let sign = if bits >> 63 == 1 { -1 } else { 1 };
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = (bits & ((1u64 << 52) - 1)) as i64;
+        if exp == 0 {
+            (sign * frac, -1074)
+        } else {
+            (sign * (frac | (1i64 << 52)), exp - 1075)
+        }
+    }
+}

@@ -1,0 +1,386 @@
+//! [`Rat`]: exact rationals over [`Int`], always in lowest terms with a
+//! positive denominator, and their exact decimal parser.
+
+use crate::Int;
+use std::cmp::Ordering;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Why a decimal or fraction text is not an exact rational.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ParseRatError {
+    /// The text is empty.
+    #[error("empty number")]
+    Empty,
+    /// `inf` or `nan`: not a finite rational.
+    #[error("`{0}` is not a finite number")]
+    NotFinite(String),
+    /// `p/0`.
+    #[error("zero denominator in `{0}`")]
+    ZeroDenominator(String),
+    /// Longer than [`Rat::MAX_TEXT`] characters or an exponent beyond
+    /// [`Rat::MAX_EXPONENT`]: refused rather than allocated.
+    #[error("`{0}` is too large (at most {max_len} characters and |exponent| <= {max_exp})", max_len = Rat::MAX_TEXT, max_exp = Rat::MAX_EXPONENT)]
+    TooLarge(String),
+    /// Anything else.
+    #[error("`{0}` is not a number (expected an integer, a decimal such as 0.125 or 1e-20, or a fraction p/q)")]
+    Invalid(String),
+}
+
+/// An exact rational number `num / den`, `den > 0`, `gcd(num, den) = 1`.
+///
+/// ```
+/// use ccd_arith::Rat;
+/// let x: Rat = "0.1".parse().unwrap();
+/// assert_eq!(x, Rat::from_frac(1, 10));
+/// assert_eq!("-2.5e-3".parse::<Rat>().unwrap().to_string(), "-1/400");
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct Rat {
+    num: Int,
+    den: Int,
+}
+
+impl Rat {
+    /// Longest number text accepted by the parser.
+    pub const MAX_TEXT: usize = 4096;
+    /// Largest decimal exponent magnitude accepted by the parser.
+    pub const MAX_EXPONENT: i64 = 4096;
+
+    /// `num / den` reduced; `None` when `den = 0`.
+    pub fn new(num: Int, den: Int) -> Option<Rat> {
+        if den.is_zero() {
+            return None;
+        }
+        Some(Rat::reduce(num, den))
+    }
+    fn reduce(mut num: Int, mut den: Int) -> Rat {
+        if den.is_negative() {
+            num = -num;
+            den = -den;
+        }
+        let g = num.gcd(&den);
+        if !g.is_one() && !g.is_zero() {
+            num = num.div_exact(&g);
+            den = den.div_exact(&g);
+        }
+        if num.is_zero() {
+            den = Int::one();
+        }
+        Rat { num, den }
+    }
+    /// `p / q` for machine integers, `q ≠ 0`.
+    pub fn from_frac(p: i64, q: i64) -> Rat {
+        assert!(q != 0, "Rat::from_frac: zero denominator");
+        Rat::reduce(Int::from(p), Int::from(q))
+    }
+    /// An integer as a rational.
+    pub fn from_int(n: Int) -> Rat {
+        Rat { num: n, den: Int::one() }
+    }
+    /// `n / 2^k`.
+    pub fn dyadic(n: Int, k: u64) -> Rat {
+        Rat::reduce(n, Int::one().shl(k))
+    }
+    /// Zero.
+    pub fn zero() -> Rat {
+        Rat::from_int(Int::zero())
+    }
+    /// One.
+    pub fn one() -> Rat {
+        Rat::from_int(Int::one())
+    }
+    /// The numerator (carries the sign).
+    pub fn numer(&self) -> &Int {
+        &self.num
+    }
+    /// The denominator (positive).
+    pub fn denom(&self) -> &Int {
+        &self.den
+    }
+    /// `self == 0`.
+    pub fn is_zero(&self) -> bool {
+        self.num.is_zero()
+    }
+    /// `self` is an integer.
+    pub fn is_integer(&self) -> bool {
+        self.den.is_one()
+    }
+    /// −1, 0 or 1.
+    pub fn signum(&self) -> i32 {
+        self.num.signum()
+    }
+    /// `|self|`.
+    pub fn abs(&self) -> Rat {
+        Rat { num: self.num.abs(), den: self.den.clone() }
+    }
+    /// `1 / self`, `None` for zero.
+    pub fn recip(&self) -> Option<Rat> {
+        Rat::new(self.den.clone(), self.num.clone())
+    }
+    /// `⌊self⌋`.
+    pub fn floor(&self) -> Int {
+        self.num.div_floor(&self.den)
+    }
+    /// `(a + b) / 2`.
+    pub fn midpoint(a: &Rat, b: &Rat) -> Rat {
+        let s = a + b;
+        Rat::reduce(s.num, s.den.shl(1))
+    }
+    /// `self · 2^k` for a signed `k`.
+    pub fn mul_pow2(&self, k: i64) -> Rat {
+        if k >= 0 {
+            Rat::reduce(self.num.shl(k as u64), self.den.clone())
+        } else {
+            Rat::reduce(self.num.clone(), self.den.shl(k.unsigned_abs()))
+        }
+    }
+    /// A nearby `f64` (not certified).
+    pub fn to_f64(&self) -> f64 {
+        let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
+        // Scale so both parts fit comfortably in f64 before dividing.
+        let s = (nb - db).clamp(-1000, 1000);
+        let shifted = self.mul_pow2(60 - s);
+        let q = shifted.num.div_trunc(&shifted.den);
+        q.to_f64() * 2f64.powi((s - 60) as i32)
+    }
+    /// `self` correctly rounded to `digits` decimals (half away from zero),
+    /// as text such as `0.539504286803`.
+    pub fn to_decimal(&self, digits: u32) -> String {
+        let scale = Int::pow10(digits);
+        let scaled = &self.num.abs() * &scale;
+        let twice = scaled.shl(1) + &self.den;
+        let q = twice.div_floor(&self.den.shl(1));
+        let mut s = q.to_string();
+        if digits > 0 {
+            let d = digits as usize;
+            if s.len() <= d {
+                s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
+            }
+            s.insert(s.len() - d, '.');
+        }
+        if self.num.is_negative() && q.signum() != 0 {
+            s.insert(0, '-');
+        }
+        s
+    }
+    /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`) or a fraction
+    /// (`-7/2`) exactly. `_` separators are not accepted here.
+    pub fn parse_exact(text: &str) -> Result<Rat, ParseRatError> {
+        let t = text.trim();
+        if t.is_empty() {
+            return Err(ParseRatError::Empty);
+        }
+        if t.len() > Rat::MAX_TEXT {
+            return Err(ParseRatError::TooLarge(format!("{}…", &t[..32])));
+        }
+        let lower = t.to_ascii_lowercase();
+        let unsigned = lower.trim_start_matches(['+', '-']);
+        if unsigned == "inf" || unsigned == "nan" || unsigned == "infinity" {
+            return Err(ParseRatError::NotFinite(t.to_string()));
+        }
+        let invalid = || ParseRatError::Invalid(t.to_string());
+        if let Some((p, q)) = t.split_once('/') {
+            let num = Int::parse_decimal(p.trim()).ok_or_else(invalid)?;
+            let q = q.trim();
+            if q.starts_with(['+', '-']) {
+                return Err(invalid());
+            }
+            let den = Int::parse_decimal(q).ok_or_else(invalid)?;
+            return Rat::new(num, den).ok_or_else(|| ParseRatError::ZeroDenominator(t.to_string()));
+        }
+        let (neg, body) = match t.as_bytes()[0] {
+            b'-' => (true, &t[1..]),
+            b'+' => (false, &t[1..]),
+            _ => (false, t),
+        };
+        let (mantissa, exp) = match body.find(['e', 'E']) {
+            Some(i) => {
+                let e = &body[i + 1..];
+                let ed = e.strip_prefix(['+', '-']).unwrap_or(e);
+                if ed.is_empty() || !ed.bytes().all(|b| b.is_ascii_digit()) {
+                    return Err(invalid());
+                }
+                let ev: i64 = if ed.len() > 6 {
+                    return Err(ParseRatError::TooLarge(t.to_string()));
+                } else {
+                    e.parse().map_err(|_| invalid())?
+                };
+                (&body[..i], ev)
+            }
+            None => (body, 0),
+        };
+        let (ip, fp) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+        if (ip.is_empty() && fp.is_empty())
+            || !ip.bytes().all(|b| b.is_ascii_digit())
+            || !fp.bytes().all(|b| b.is_ascii_digit())
+        {
+            return Err(invalid());
+        }
+        let exp = exp - fp.len() as i64;
+        if exp.abs() > Rat::MAX_EXPONENT + Rat::MAX_TEXT as i64 {
+            return Err(ParseRatError::TooLarge(t.to_string()));
+        }
+        let digits = format!("{ip}{fp}");
+        let mut num = Int::parse_decimal(&digits).ok_or_else(invalid)?;
+        if neg {
+            num = -num;
+        }
+        let p10 = Int::pow10(exp.unsigned_abs() as u32);
+        Ok(if exp >= 0 { Rat::from_int(num * p10) } else { Rat::reduce(num, p10) })
+    }
+}
+
+impl std::str::FromStr for Rat {
+    type Err = ParseRatError;
+    fn from_str(s: &str) -> Result<Rat, ParseRatError> {
+        Rat::parse_exact(s)
+    }
+}
+
+impl std::fmt::Display for Rat {
+    /// `p` or `p/q` in lowest terms: the contract's exact time format.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.den.is_one() {
+            write!(f, "{}", self.num)
+        } else {
+            write!(f, "{}/{}", self.num, self.den)
+        }
+    }
+}
+impl std::fmt::Debug for Rat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
+}
+
+impl From<i64> for Rat {
+    fn from(v: i64) -> Rat {
+        Rat::from_int(Int::from(v))
+    }
+}
+impl From<Int> for Rat {
+    fn from(v: Int) -> Rat {
+        Rat::from_int(v)
+    }
+}
+
+impl Ord for Rat {
+    fn cmp(&self, o: &Rat) -> Ordering {
+        if self.den == o.den {
+            return self.num.cmp(&o.num);
+        }
+        (&self.num * &o.den).cmp(&(&o.num * &self.den))
+    }
+}
+impl PartialOrd for Rat {
+    fn partial_cmp(&self, o: &Rat) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl Add<&Rat> for &Rat {
+    type Output = Rat;
+    fn add(self, o: &Rat) -> Rat {
+        if self.den == o.den {
+            return Rat::reduce(&self.num + &o.num, self.den.clone());
+        }
+        Rat::reduce(&self.num * &o.den + &o.num * &self.den, &self.den * &o.den)
+    }
+}
+impl Sub<&Rat> for &Rat {
+    type Output = Rat;
+    fn sub(self, o: &Rat) -> Rat {
+        self + &(-o)
+    }
+}
+impl Mul<&Rat> for &Rat {
+    type Output = Rat;
+    fn mul(self, o: &Rat) -> Rat {
+        Rat::reduce(&self.num * &o.num, &self.den * &o.den)
+    }
+}
+impl Div<&Rat> for &Rat {
+    type Output = Rat;
+    /// Panics on division by zero; callers divide by values proven nonzero.
+    fn div(self, o: &Rat) -> Rat {
+        assert!(!o.is_zero(), "Rat: division by zero");
+        Rat::reduce(&self.num * &o.den, &self.den * &o.num)
+    }
+}
+impl Neg for &Rat {
+    type Output = Rat;
+    fn neg(self) -> Rat {
+        Rat { num: -&self.num, den: self.den.clone() }
+    }
+}
+impl Neg for Rat {
+    type Output = Rat;
+    fn neg(self) -> Rat {
+        Rat { num: -self.num, den: self.den }
+    }
+}
+macro_rules! owned_rat_ops {
+    ($($tr:ident $m:ident),*) => {$(
+        impl $tr<Rat> for Rat { type Output = Rat; fn $m(self, o: Rat) -> Rat { (&self).$m(&o) } }
+        impl $tr<&Rat> for Rat { type Output = Rat; fn $m(self, o: &Rat) -> Rat { (&self).$m(o) } }
+        impl $tr<Rat> for &Rat { type Output = Rat; fn $m(self, o: Rat) -> Rat { self.$m(&o) } }
+    )*};
+}
+owned_rat_ops!(Add add, Sub sub, Mul mul, Div div);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn r(s: &str) -> Rat {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn parses_the_contract_forms() {
+        assert_eq!(r("3"), Rat::from(3));
+        assert_eq!(r("0.1"), Rat::from_frac(1, 10));
+        assert_eq!(r("-2.5e-3"), Rat::from_frac(-1, 400));
+        assert_eq!(r("1/3"), Rat::from_frac(1, 3));
+        assert_eq!(r("-7/2"), Rat::from_frac(-7, 2));
+        assert_eq!(r("0.125"), Rat::from_frac(1, 8));
+        assert_eq!(r("1e-20"), Rat::new(Int::one(), Int::pow10(20)).unwrap());
+        assert_eq!(r("1E5"), Rat::from(100000));
+        assert_eq!(r(".5"), Rat::from_frac(1, 2));
+        assert_eq!(r("5."), Rat::from(5));
+    }
+
+    #[test]
+    fn rejects_what_the_contract_rejects() {
+        assert_eq!(Rat::parse_exact(""), Err(ParseRatError::Empty));
+        assert!(matches!(Rat::parse_exact("inf"), Err(ParseRatError::NotFinite(_))));
+        assert!(matches!(Rat::parse_exact("-nan"), Err(ParseRatError::NotFinite(_))));
+        assert!(matches!(Rat::parse_exact("1/0"), Err(ParseRatError::ZeroDenominator(_))));
+        assert!(matches!(Rat::parse_exact("1e999999999"), Err(ParseRatError::TooLarge(_))));
+        for bad in ["abc", "1/-2", "1.2.3", "e5", "1e", "--1", "1/2/3", "0x1"] {
+            assert!(matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))), "{bad}");
+        }
+    }
+
+    #[test]
+    fn decimal_output_rounds_half_away() {
+        assert_eq!(Rat::from_frac(1, 3).to_decimal(4), "0.3333");
+        assert_eq!(Rat::from_frac(2, 3).to_decimal(4), "0.6667");
+        assert_eq!(Rat::from_frac(-1, 8).to_decimal(2), "-0.13");
+        assert_eq!(Rat::from(7).to_decimal(0), "7");
+        assert_eq!(Rat::zero().to_decimal(3), "0.000");
+    }
+
+    proptest! {
+        #[test]
+        fn field_identities(a in -1000i64..1000, b in 1i64..1000, c in -1000i64..1000, d in 1i64..1000) {
+            let (x, y) = (Rat::from_frac(a, b), Rat::from_frac(c, d));
+            prop_assert_eq!(&(&x + &y) - &y, x.clone());
+            if !y.is_zero() { prop_assert_eq!(&(&x * &y) / &y, x.clone()); }
+            prop_assert_eq!(x < y, (a as i128) * (d as i128) < (c as i128) * (b as i128));
+            prop_assert!((x.to_f64() - a as f64 / b as f64).abs() < 1e-12);
+            prop_assert_eq!(r(&x.to_string()), x);
+        }
+    }
+}

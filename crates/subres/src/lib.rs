@@ -1,0 +1,1 @@
+//! Signed subresultant sequences (Sylvester–Habicht) over any exact ring, and the closed forms for quartics

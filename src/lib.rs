@@ -1,0 +1,1 @@
+//! ccd-exact (placeholder while the crates below it are built).
