@@ -114,11 +114,17 @@ pub(crate) fn low_u64_of_abs(a: &Inner) -> u64 {
 }
 #[inline]
 pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {
-    let r = Integer::from(a.rem_euc_ref(&Integer::from(p)));
+    let pb = Integer::from(p);
+    let mut r = Integer::from(a % &pb);
+    if r.cmp0() == Ordering::Less {
+        r += &pb;
+    }
     r.to_u64().unwrap_or(0)
 }
 pub(crate) fn to_u64_limbs(a: &Inner) -> (bool, Vec<u64>) {
-    (a.cmp0() == Ordering::Less, a.to_digits::<u64>(Order::Lsf))
+    let mut limbs = vec![0u64; a.significant_digits::<u64>()];
+    a.write_digits(&mut limbs, Order::Lsf);
+    (a.cmp0() == Ordering::Less, limbs)
 }
 pub(crate) fn from_u64_limbs(negative: bool, limbs: &[u64]) -> Inner {
     let m = Integer::from_digits(limbs, Order::Lsf);
