@@ -134,6 +134,22 @@ impl Rat {
             Rat::reduce(self.num.clone(), self.den.shl(k.unsigned_abs()))
         }
     }
+    /// The exact value of a finite `f64` (every finite float is a dyadic
+    /// rational); `None` for infinities and NaN.
+    pub fn from_f64_exact(x: f64) -> Option<Rat> {
+        if !x.is_finite() {
+            return None;
+        }
+        if x == 0.0 {
+            return Some(Rat::zero());
+        }
+        let bits = x.to_bits();
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = bits & ((1u64 << 52) - 1);
+        let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
+        let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
+        Some(if x < 0.0 { -v } else { v })
+    }
     /// A nearby `f64` (not certified).
     pub fn to_f64(&self) -> f64 {
         let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
@@ -171,7 +187,7 @@ impl Rat {
             return Err(ParseRatError::Empty);
         }
         if t.len() > Rat::MAX_TEXT {
-            return Err(ParseRatError::TooLarge(format!("{}…", &t[..32])));
+            return Err(ParseRatError::TooLarge(format!("{}…", t.chars().take(32).collect::<String>())));
         }
         let lower = t.to_ascii_lowercase();
         let unsigned = lower.trim_start_matches(['+', '-']);
@@ -358,6 +374,9 @@ mod tests {
         assert!(matches!(Rat::parse_exact("-nan"), Err(ParseRatError::NotFinite(_))));
         assert!(matches!(Rat::parse_exact("1/0"), Err(ParseRatError::ZeroDenominator(_))));
         assert!(matches!(Rat::parse_exact("1e999999999"), Err(ParseRatError::TooLarge(_))));
+        // Over-long text cut for the message at a character boundary, not a byte.
+        let long = format!("1{}", "é".repeat(3000));
+        assert!(matches!(Rat::parse_exact(&long), Err(ParseRatError::TooLarge(_))));
         for bad in ["abc", "1/-2", "1.2.3", "e5", "1e", "--1", "1/2/3", "0x1"] {
             assert!(matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))), "{bad}");
         }
@@ -380,7 +399,9 @@ mod tests {
             if !y.is_zero() { prop_assert_eq!(&(&x * &y) / &y, x.clone()); }
             prop_assert_eq!(x < y, (a as i128) * (d as i128) < (c as i128) * (b as i128));
             prop_assert!((x.to_f64() - a as f64 / b as f64).abs() < 1e-12);
-            prop_assert_eq!(r(&x.to_string()), x);
+            prop_assert_eq!(r(&x.to_string()), x.clone());
+            let f = x.to_f64();
+            prop_assert_eq!(Rat::from_f64_exact(f).map(|v| v.to_f64()), Some(f));
         }
     }
 }

@@ -1,0 +1,129 @@
+//! The local value checks shared by the parser and [`Scene::validate`]:
+//! everything that can be decided without solving for roots on the span.
+
+use ccd_arith::Rat;
+use ccd_motion::{Bezier, Body, Motion};
+
+use crate::error::{FieldPath, Limit, SceneError};
+use crate::{Scene, MAX_CONTROL_POINTS};
+
+type Result<T> = std::result::Result<T, SceneError>;
+
+/// See [`Scene::validate`].
+pub(crate) fn validate(scene: &Scene) -> Result<()> {
+    let [t0, t1] = &scene.span;
+    if t0 >= t1 {
+        return Err(SceneError::Span {
+            t0: Box::new(t0.clone()),
+            t1: Box::new(t1.clone()),
+        });
+    }
+    body(&scene.a, &FieldPath::root("a"))?;
+    body(&scene.b, &FieldPath::root("b"))
+}
+
+/// A curve at `path` has `n` control points: between 1 and
+/// [`MAX_CONTROL_POINTS`].
+pub(crate) fn control_count(n: usize, path: &FieldPath) -> Result<()> {
+    if n == 0 {
+        Err(SceneError::Empty {
+            field: path.to_field(),
+        })
+    } else if n > MAX_CONTROL_POINTS {
+        Err(SceneError::TooLarge {
+            field: path.to_field(),
+            limit: Limit::ControlPoints,
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// `x > 0`.
+fn positive(x: &Rat, path: &FieldPath) -> Result<()> {
+    if x.signum() > 0 {
+        Ok(())
+    } else {
+        Err(SceneError::NonPositive {
+            field: path.to_field(),
+            value: x.clone(),
+        })
+    }
+}
+
+/// Not all of `v` is zero; `err` builds the error otherwise.
+fn nonzero(v: &[Rat], path: &FieldPath, err: fn(String) -> SceneError) -> Result<()> {
+    if v.iter().all(Rat::is_zero) {
+        Err(err(path.to_field()))
+    } else {
+        Ok(())
+    }
+}
+
+/// An orientation quaternion is not zero.
+fn rotation(q: &[Rat], path: &FieldPath) -> Result<()> {
+    nonzero(q, &path.key("orientation"), |field| {
+        SceneError::ZeroQuaternion { field }
+    })
+}
+
+fn body(b: &Body, path: &FieldPath) -> Result<()> {
+    let radii = path.key("radii");
+    for (i, r) in b.radii.iter().enumerate() {
+        positive(r, &radii.index(i))?;
+    }
+    motion(&b.motion, &path.key("motion"))
+}
+
+/// The curve at `motion.key` and its weights at `motion.weights`: 1 to
+/// [`MAX_CONTROL_POINTS`] points, one positive weight per point.
+fn curve<P>(c: &Bezier<P>, motion: &FieldPath, key: &str) -> Result<()> {
+    control_count(c.points.len(), &motion.key(key))?;
+    let Some(w) = &c.weights else { return Ok(()) };
+    let path = motion.key("weights");
+    if w.len() != c.points.len() {
+        return Err(SceneError::Length {
+            field: path.to_field(),
+            expected: c.points.len(),
+            found: w.len(),
+        });
+    }
+    w.iter()
+        .enumerate()
+        .try_for_each(|(i, x)| positive(x, &path.index(i)))
+}
+
+fn motion(m: &Motion, path: &FieldPath) -> Result<()> {
+    match m {
+        Motion::Static { orientation, .. } => rotation(orientation, path),
+        Motion::Translation {
+            center,
+            orientation,
+        } => {
+            curve(center, path, "center")?;
+            rotation(orientation, path)
+        }
+        Motion::Rigid {
+            orientation,
+            center,
+        } => {
+            // The format has no weights for the quaternion curve.
+            if orientation.weights.is_some() {
+                return Err(SceneError::Unknown {
+                    field: path.key("orientation").key("weights").to_field(),
+                });
+            }
+            curve(orientation, path, "orientation")?;
+            curve(center, path, "center")
+        }
+        Motion::Affine { matrix } => curve(matrix, path, "matrix"),
+        Motion::Helical {
+            orientation, axis, ..
+        } => {
+            rotation(orientation, path)?;
+            nonzero(axis, &path.key("axis"), |field| SceneError::ZeroAxis {
+                field,
+            })
+        }
+    }
+}
