@@ -1,0 +1,518 @@
+//! [`Bernstein`]: a polynomial in the Bernstein basis of an interval, with
+//! integer coefficients times one rational factor, and integer-only
+//! conversion, degree elevation and de Casteljau subdivision.
+//!
+//! Two identities carry all conversions. For `P(u) = Σ_i b_i B_i^n(u)`,
+//! `B_i^n(u) = C(n,i) u^i (1−u)^(n−i)`:
+//!
+//! * `(1+s)^n P(s/(1+s)) = Σ_i C(n,i) b_i s^i`, and in terms of the power
+//!   coefficients `a_j` of `P` the left side is `Σ_j a_j s^j (1+s)^(n−j)`,
+//!   i.e. reverse, Taylor shift by `1`, reverse. So the *binomially scaled*
+//!   coefficients `c_i = C(n,i) b_i` come from the power basis with additions
+//!   only, and back with a shift by `−1`.
+//! * Degree elevation by `r` multiplies that generating polynomial by
+//!   `(1+s)^r`: `Σ_k C(n+r,k) b'_k s^k = (1+s)^r Σ_i C(n,i) b_i s^i`.
+//!
+//! Dividing the `c_i` by the binomials is the only step leaving `Z`; it is
+//! done once per conversion over a common denominator.
+
+use crate::mul::mul_coeffs;
+use crate::zpoly::{hom_horner, lcm, taylor_shift_in_place};
+use crate::{QPoly, ZPoly};
+use ccd_arith::{Int, Rat};
+
+/// The Bernstein form of a polynomial of degree `≤ n` on `[lo, hi]`:
+/// `value(t) = scale · Σ_i coeffs[i] · B_i^n((t − lo)/(hi − lo))`.
+///
+/// Normalised so that `scale > 0` (the coefficients carry the signs of the
+/// true Bernstein coefficients) and the coefficients have content `1`
+/// (for the zero polynomial: `scale = 1`, all coefficients `0`).
+///
+/// ```
+/// use ccd_arith::Rat;
+/// use ccd_poly::{Bernstein, ZPoly};
+/// // t² − 2 on [1, 2]: Bernstein coefficients −1, 0, 2.
+/// let b = Bernstein::from_power(&ZPoly::from_i64s(&[-2, 0, 1]), &Rat::from(1), &Rat::from(2));
+/// assert_eq!(b.sign_variations(), 1);
+/// let (l, r) = b.split_half();
+/// assert_eq!((l.sign_variations(), r.sign_variations()), (1, 0)); // √2 < 1.5
+/// ```
+#[derive(Clone, PartialEq, Eq, Debug)]
+pub struct Bernstein {
+    lo: Rat,
+    hi: Rat,
+    scale: Rat,
+    coeffs: Vec<Int>,
+}
+
+/// `C(n, 0), …, C(n, n)`.
+pub(crate) fn binomials(n: usize) -> Vec<Int> {
+    let mut row = Vec::with_capacity(n + 1);
+    let mut c = Int::one();
+    for i in 0..=n {
+        row.push(c.clone());
+        if i < n {
+            c = c
+                .mul_i64((n - i) as i64)
+                .div_exact(&Int::from((i + 1) as i64));
+        }
+    }
+    row
+}
+
+/// `(β, f)` with `c_i / C(n, i) = f·β_i`, `f > 0` rational, `β` integer:
+/// each `c_i / C(n,i)` is reduced, then brought over the lcm `L` of the
+/// reduced denominators (which divides `lcm_i C(n,i)`), so `f = 1/L`.
+fn divide_binomials(c: Vec<Int>) -> (Vec<Int>, Rat) {
+    let n = c.len() - 1;
+    let binom = binomials(n);
+    let mut parts = Vec::with_capacity(n + 1);
+    let mut l = Int::one();
+    for (ci, bi) in c.into_iter().zip(&binom) {
+        let g = ci.gcd(bi);
+        let (num, den) = if g.is_zero() || g.is_one() {
+            (ci, bi.clone())
+        } else {
+            (ci.div_exact(&g), bi.div_exact(&g))
+        };
+        let (num, den) = if num.is_zero() {
+            (num, Int::one())
+        } else {
+            (num, den)
+        };
+        l = lcm(&l, &den);
+        parts.push((num, den));
+    }
+    let beta = parts
+        .into_iter()
+        .map(|(num, den)| {
+            if den == l {
+                num
+            } else {
+                num * l.div_exact(&den)
+            }
+        })
+        .collect();
+    (beta, Rat::new(Int::one(), l).expect("positive lcm"))
+}
+
+/// `β_i · C(n, i)`.
+fn times_binomials(beta: &[Int]) -> Vec<Int> {
+    beta.iter()
+        .zip(binomials(beta.len() - 1))
+        .map(|(b, c)| b * &c)
+        .collect()
+}
+
+/// Reverse, Taylor shift by `s`, reverse (fixed length `n + 1`): maps the
+/// power coefficients of `P` to `c_i = C(n,i) b_i` for `s = 1`, and back
+/// for `s = −1`.
+fn reverse_shift_reverse(mut v: Vec<Int>, s: i64) -> Vec<Int> {
+    v.reverse();
+    taylor_shift_in_place(&mut v, &Int::from(s));
+    v.reverse();
+    v
+}
+
+/// A multiplier of the de Casteljau triangle: `1`, `2^k`, or general.
+enum Factor {
+    One,
+    Pow2(u64),
+    Other(Int),
+}
+
+impl Factor {
+    fn of(x: &Int) -> Factor {
+        match x.trailing_zeros() {
+            Some(0) if x.is_one() => Factor::One,
+            Some(k) if k > 0 && x.shr_floor(k).is_one() => Factor::Pow2(k),
+            _ => Factor::Other(x.clone()),
+        }
+    }
+    /// `x ← factor·x`.
+    fn scale(&self, x: &mut Int) {
+        match self {
+            Factor::One => {}
+            Factor::Pow2(k) => *x = x.shl(*k),
+            Factor::Other(v) => *x *= v,
+        }
+    }
+    /// `x ← x + factor·y`.
+    fn add_scaled(&self, x: &mut Int, y: &Int) {
+        match self {
+            Factor::One => *x += y,
+            Factor::Pow2(k) => *x += y.shl(*k),
+            Factor::Other(v) => x.add_mul(y, v),
+        }
+    }
+}
+
+impl Bernstein {
+    /// `scale · Σ coeffs[i] B_i^n` on `[lo, hi]`, normalised (see the type
+    /// docs): the sign of `scale` moves into the coefficients, and their
+    /// common power of two and content into `scale`. Panics unless
+    /// `lo < hi` and `coeffs` is nonempty.
+    pub fn from_parts(lo: Rat, hi: Rat, scale: Rat, mut coeffs: Vec<Int>) -> Bernstein {
+        assert!(lo < hi, "Bernstein: empty interval");
+        assert!(!coeffs.is_empty(), "Bernstein: no coefficients");
+        let mut scale = scale;
+        if scale.signum() <= 0 {
+            if scale.is_zero() {
+                coeffs.iter_mut().for_each(|c| *c = Int::zero());
+                return Bernstein {
+                    lo,
+                    hi,
+                    scale: Rat::one(),
+                    coeffs,
+                };
+            }
+            scale = -scale;
+            coeffs.iter_mut().for_each(|c| *c = -&*c);
+        }
+        let Some(tz) = coeffs.iter().filter_map(Int::trailing_zeros).min() else {
+            return Bernstein {
+                lo,
+                hi,
+                scale: Rat::one(),
+                coeffs,
+            };
+        };
+        if tz > 0 {
+            coeffs.iter_mut().for_each(|c| *c = c.shr_floor(tz));
+            scale = scale.mul_pow2(tz as i64);
+        }
+        let g = crate::zpoly::content_of(&coeffs);
+        if !g.is_one() {
+            coeffs.iter_mut().for_each(|c| *c = c.div_exact(&g));
+            scale = &scale * &Rat::from_int(g);
+        }
+        Bernstein {
+            lo,
+            hi,
+            scale,
+            coeffs,
+        }
+    }
+
+    /// The Bernstein form of `p` on `[lo, hi]` (`lo < hi`), of degree
+    /// `deg p` (`0` for constants and zero). With `w = hi − lo`,
+    /// `P = p.compose_affine(lo, w) = κ·p(lo + w u)`, `κ = lc(P)/(lc(p) w^n) > 0`;
+    /// the Bernstein coefficients of `P` on `[0, 1]` are `c_i / C(n, i)` with
+    /// `c` from reverse–shift–reverse (see the module docs); dividing by `κ`
+    /// gives those of `p`.
+    pub fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Bernstein {
+        assert!(lo < hi, "Bernstein::from_power: need lo < hi");
+        let Some(n) = p.degree() else {
+            return Bernstein::from_parts(lo.clone(), hi.clone(), Rat::one(), vec![Int::zero()]);
+        };
+        let w = hi - lo;
+        let big_p = p.compose_affine(lo, &w);
+        let mut wn = Rat::one();
+        for _ in 0..n {
+            wn = &wn * &w;
+        }
+        let lc_exact = &Rat::from_int(p.leading().expect("nonzero").clone()) * &wn;
+        let kappa = &Rat::from_int(big_p.leading().expect("degree kept").clone()) / &lc_exact;
+        let c = reverse_shift_reverse(big_p.into_coeffs(), 1);
+        let (beta, f) = divide_binomials(c);
+        Bernstein::from_parts(lo.clone(), hi.clone(), &f / &kappa, beta)
+    }
+    /// The Bernstein form of a rational polynomial: that of its primitive
+    /// part, times its scale.
+    pub fn from_qpoly(p: &QPoly, lo: &Rat, hi: &Rat) -> Bernstein {
+        let b = Bernstein::from_power(p.prim(), lo, hi);
+        Bernstein::from_parts(b.lo, b.hi, &b.scale * p.scale(), b.coeffs)
+    }
+    /// The power form: `P(u) = Σ b_i B_i^n(u)` by reverse–shift(−1)–reverse
+    /// of `C(n,i) b_i`, then `value(t) = scale·P((t − lo)/w)`.
+    pub fn to_power(&self) -> QPoly {
+        let a = reverse_shift_reverse(times_binomials(&self.coeffs), -1);
+        let w = &self.hi - &self.lo;
+        let inv_w = Rat::one() / &w;
+        QPoly::from_zpoly(&ZPoly::new(a))
+            .compose_affine(&(-&(&self.lo * &inv_w)), &inv_w)
+            .mul_rat(&self.scale)
+    }
+    /// The left end.
+    pub fn lo(&self) -> &Rat {
+        &self.lo
+    }
+    /// The right end.
+    pub fn hi(&self) -> &Rat {
+        &self.hi
+    }
+    /// The positive rational factor.
+    pub fn scale(&self) -> &Rat {
+        &self.scale
+    }
+    /// The integer coefficients (the true Bernstein coefficients divided by `scale`).
+    pub fn coeffs(&self) -> &[Int] {
+        &self.coeffs
+    }
+    /// The degree `n` of the basis (`coeffs.len() − 1`).
+    pub fn degree(&self) -> usize {
+        self.coeffs.len() - 1
+    }
+    /// The same polynomial in the basis of degree `n + by`:
+    /// `C(n+by, k) b'_k = Σ_i C(n,i) b_i C(by, k−i)`.
+    pub fn elevate(&self, by: usize) -> Bernstein {
+        if by == 0 {
+            return self.clone();
+        }
+        let c = mul_coeffs(&times_binomials(&self.coeffs), &binomials(by));
+        let (beta, f) = divide_binomials(c);
+        Bernstein::from_parts(self.lo.clone(), self.hi.clone(), &self.scale * &f, beta)
+    }
+    /// de Casteljau subdivision at the local parameter `r = p/q ∈ (0, 1)`:
+    /// the children on `[lo, m]` and `[m, hi]`, `m = lo + (hi − lo)·r`.
+    ///
+    /// On integers: `b⁽⁰⁾ = coeffs`, `b⁽ᵏ⁾_i = (q−p)·b⁽ᵏ⁻¹⁾_i + p·b⁽ᵏ⁻¹⁾_{i+1}`
+    /// (that is `q^k` times the rational triangle), then
+    /// `left_k = q^(n−k) b⁽ᵏ⁾_0` and `right_k = q^k b⁽ⁿ⁻ᵏ⁾_k`, both `q^n` times
+    /// the exact children, so each child has scale `scale/q^n` before
+    /// normalisation. Multipliers equal to `1` or a power of two cost an
+    /// addition or a shift (`r = 1/2`: additions and shifts only).
+    pub fn split(&self, r: &Rat) -> (Bernstein, Bernstein) {
+        assert!(
+            r.signum() > 0 && *r < Rat::one(),
+            "Bernstein::split: r must lie in (0, 1)"
+        );
+        let n = self.degree();
+        let (p, q) = (r.numer(), r.denom());
+        let (fp, fs) = (Factor::of(p), Factor::of(&(q - p)));
+        let fq = Factor::of(q);
+        // q^j as a factor: a shift for powers of two, else a cached power.
+        let qpow: Vec<Int> = match fq {
+            Factor::Other(_) => {
+                let mut v = vec![Int::one()];
+                for j in 1..=n {
+                    let next = &v[j - 1] * q;
+                    v.push(next);
+                }
+                v
+            }
+            _ => Vec::new(),
+        };
+        let times_qpow = |x: &Int, j: usize| -> Int {
+            match &fq {
+                Factor::One => x.clone(),
+                Factor::Pow2(k) => x.shl(k * j as u64),
+                Factor::Other(_) => x * &qpow[j],
+            }
+        };
+        let mut v = self.coeffs.clone();
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = vec![Int::zero(); n + 1];
+        left.push(times_qpow(&v[0], n));
+        right[n] = times_qpow(&v[n], n);
+        for k in 1..=n {
+            for i in 0..=n - k {
+                let (a, b) = v.split_at_mut(i + 1);
+                fs.scale(&mut a[i]);
+                fp.add_scaled(&mut a[i], &b[0]);
+            }
+            left.push(times_qpow(&v[0], n - k));
+            right[n - k] = times_qpow(&v[n - k], n - k);
+        }
+        let qn = Rat::from_int(q.pow(n as u32));
+        let child_scale = &self.scale / &qn;
+        let m = &self.lo + &(&(&self.hi - &self.lo) * r);
+        (
+            Bernstein::from_parts(self.lo.clone(), m.clone(), child_scale.clone(), left),
+            Bernstein::from_parts(m, self.hi.clone(), child_scale, right),
+        )
+    }
+    /// [`Bernstein::split`] at `r = 1/2`.
+    pub fn split_half(&self) -> (Bernstein, Bernstein) {
+        self.split(&Rat::from_frac(1, 2))
+    }
+    /// The number of sign changes in the coefficient sequence, zeros
+    /// skipped (the scale is positive). By Descartes' rule for the Bernstein
+    /// basis it bounds the number of roots in `(lo, hi)` counted with
+    /// multiplicity, and has the same parity; `0` and `1` are exact counts.
+    pub fn sign_variations(&self) -> usize {
+        let mut last = 0;
+        let mut count = 0;
+        for s in self.coeffs.iter().map(Int::signum).filter(|&s| s != 0) {
+            if last != 0 && s != last {
+                count += 1;
+            }
+            last = s;
+        }
+        count
+    }
+    /// The exact value at the global parameter `t`: with
+    /// `(t − lo)/(hi − lo) = x/y`, `value = scale·Σ C(n,i) β_i x^i (y − x)^(n−i) / y^n`.
+    pub fn eval(&self, t: &Rat) -> Rat {
+        let u = &(t - &self.lo) / &(&self.hi - &self.lo);
+        let (x, y) = (u.numer(), u.denom());
+        let num = hom_horner(&times_binomials(&self.coeffs), x, &(y - x));
+        let den = y.pow(self.degree() as u32);
+        &self.scale * &Rat::new(num, den).expect("positive denominator power")
+    }
+    /// The exact sign of the value at `lo` (the first coefficient's).
+    pub fn sign_at_lo(&self) -> i32 {
+        self.coeffs[0].signum()
+    }
+    /// The exact sign of the value at `hi` (the last coefficient's).
+    pub fn sign_at_hi(&self) -> i32 {
+        self.coeffs[self.degree()].signum()
+    }
+    /// `(min_i, max_i)` of the true Bernstein coefficients `scale·coeffs[i]`:
+    /// by the convex-hull property every value on `[lo, hi]` lies between.
+    pub fn enclosure(&self) -> (Rat, Rat) {
+        let lo = self.coeffs.iter().min().expect("nonempty");
+        let hi = self.coeffs.iter().max().expect("nonempty");
+        (
+            &self.scale * &Rat::from_int(lo.clone()),
+            &self.scale * &Rat::from_int(hi.clone()),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testutil::{rat, zpoly, zpoly_deg};
+    use proptest::prelude::*;
+
+    /// An interval `[lo, lo + w]` with `w > 0`.
+    fn interval() -> impl Strategy<Value = (Rat, Rat)> {
+        (rat(), 1i64..1000, 1i64..1000).prop_map(|(lo, n, d)| {
+            let hi = &lo + &Rat::from_frac(n, d);
+            (lo, hi)
+        })
+    }
+
+    #[test]
+    fn known_small_cases() {
+        let z = ZPoly::from_i64s;
+        let b = Bernstein::from_power(&z(&[-2, 0, 1]), &Rat::from(1), &Rat::from(2));
+        assert_eq!(b.coeffs(), [Int::from(-1), Int::zero(), Int::from(2)]);
+        assert_eq!(b.scale(), &Rat::one());
+        assert_eq!((b.sign_at_lo(), b.sign_at_hi()), (-1, 1));
+        assert_eq!(b.enclosure(), (Rat::from(-1), Rat::from(2)));
+        let zero = Bernstein::from_power(&ZPoly::zero(), &Rat::zero(), &Rat::one());
+        assert_eq!(
+            (
+                zero.degree(),
+                zero.sign_variations(),
+                zero.eval(&Rat::from(5))
+            ),
+            (0, 0, Rat::zero())
+        );
+        assert!(zero.to_power().is_zero());
+        let c = Bernstein::from_qpoly(
+            &QPoly::constant(Rat::from_frac(-3, 7)),
+            &Rat::zero(),
+            &Rat::one(),
+        );
+        assert_eq!(
+            (c.coeffs(), c.scale()),
+            (&[Int::from(-1)][..], &Rat::from_frac(3, 7))
+        );
+        assert_eq!(
+            c.elevate(3).coeffs(),
+            [Int::from(-1), Int::from(-1), Int::from(-1), Int::from(-1)]
+        );
+        let (l, r) = c.split(&Rat::from_frac(1, 3));
+        assert_eq!(
+            (l.hi(), r.lo(), l.lo(), r.hi()),
+            (
+                &Rat::from_frac(1, 3),
+                &Rat::from_frac(1, 3),
+                &Rat::zero(),
+                &Rat::one()
+            )
+        );
+    }
+
+    #[test]
+    fn positive_polynomial_loses_all_variations_under_subdivision() {
+        // 100t² − 100t + 26 = 100(t − 1/2)² + 1 > 0 on [0, 1].
+        let b = Bernstein::from_power(
+            &ZPoly::from_i64s(&[26, -100, 100]),
+            &Rat::zero(),
+            &Rat::one(),
+        );
+        assert_eq!(b.sign_variations(), 2);
+        let mut pieces = vec![b];
+        for _ in 0..4 {
+            pieces = pieces
+                .iter()
+                .flat_map(|p| {
+                    let (l, r) = p.split_half();
+                    [l, r]
+                })
+                .collect();
+        }
+        assert!(pieces
+            .iter()
+            .all(|p| p.sign_variations() == 0 && p.sign_at_lo() > 0));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        #[test]
+        fn conversion_round_trip_and_values(p in zpoly(10, 150), (lo, hi) in interval(), t in rat()) {
+            let b = Bernstein::from_power(&p, &lo, &hi);
+            prop_assert_eq!(b.degree(), p.degree().unwrap_or(0));
+            prop_assert!(b.scale().signum() > 0);
+            prop_assert_eq!(b.to_power(), QPoly::from_zpoly(&p));
+            prop_assert_eq!(b.eval(&t), p.eval_rat(&t));
+            prop_assert_eq!(b.eval(&lo).signum(), b.sign_at_lo());
+            prop_assert_eq!(b.eval(&hi).signum(), b.sign_at_hi());
+            let (emin, emax) = b.enclosure();
+            for k in 0..=4 {
+                let s = &lo + &(&(&hi - &lo) * &Rat::from_frac(k, 4));
+                let v = p.eval_rat(&s);
+                prop_assert!(emin <= v && v <= emax);
+            }
+            let e = b.elevate(3);
+            prop_assert_eq!(e.degree(), b.degree() + 3);
+            prop_assert_eq!(e.eval(&t), b.eval(&t));
+            let q = QPoly::from_zpoly(&p).mul_rat(&t);
+            prop_assert_eq!(Bernstein::from_qpoly(&q, &lo, &hi).eval(&lo), q.eval_rat(&lo));
+        }
+
+        #[test]
+        fn split_children_agree_with_parent(p in zpoly(9, 120), (lo, hi) in interval(), k in 1i64..99, s in rat()) {
+            let b = Bernstein::from_power(&p, &lo, &hi);
+            let w = &hi - &lo;
+            for r in [Rat::from_frac(1, 2), Rat::from_frac(1, 3), Rat::from_frac(7, 10), Rat::from_frac(k, 100)] {
+                let (l, rt) = b.split(&r);
+                let m = &lo + &(&w * &r);
+                prop_assert_eq!((l.lo(), l.hi(), rt.lo(), rt.hi()), (&lo, &m, &m, &hi));
+                for child in [&l, &rt] {
+                    prop_assert_eq!(child.degree(), b.degree());
+                    for j in 0..=3 {
+                        let t = child.lo() + &(&(child.hi() - child.lo()) * &Rat::from_frac(j, 3));
+                        prop_assert_eq!(child.eval(&t), b.eval(&t));
+                    }
+                    prop_assert_eq!(child.eval(&s), b.eval(&s));
+                }
+            }
+            prop_assert_eq!(b.split_half(), b.split(&Rat::from_frac(1, 2)));
+        }
+
+        #[test]
+        fn variations_bound_the_roots(roots in prop::collection::vec(-20i64..20, 1..7), other in zpoly_deg(0, 3, 20), lo in -25i64..0, w in 1i64..30) {
+            // p = Π (t − r_i/2) · (other² + 1): the rational roots are exactly r_i/2.
+            let mut p = ZPoly::one();
+            for r in &roots {
+                p = &p * &ZPoly::from_i64s(&[-r, 2]);
+            }
+            p = &p * &(&(&other * &other) + &ZPoly::one());
+            let (lo, hi) = (Rat::from(lo), Rat::from(lo + w));
+            let inside = roots.iter().filter(|&&r| Rat::from_frac(r, 2) > lo && Rat::from_frac(r, 2) < hi).count();
+            let b = Bernstein::from_power(&p, &lo, &hi);
+            let v = b.sign_variations();
+            prop_assert!(v >= inside);
+            // Roots are counted with multiplicity; with no root at an end the parity is exact.
+            if b.sign_at_lo() != 0 && b.sign_at_hi() != 0 {
+                prop_assert_eq!(v % 2, inside % 2);
+            }
+        }
+    }
+}
