@@ -110,7 +110,7 @@ pub(crate) fn to_i64(a: &Inner) -> Option<i64> {
 }
 #[inline]
 pub(crate) fn low_u64_of_abs(a: &Inner) -> u64 {
-    a.as_limbs().first().map_or(0, |&l| l as u64)
+    a.as_limbs().first().map_or(0, |&l| l)
 }
 #[inline]
 pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {

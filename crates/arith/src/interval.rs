@@ -40,7 +40,10 @@ fn scale2(x: f64, k: i64) -> (f64, f64) {
 
 impl Interval {
     /// The whole real line.
-    pub const ENTIRE: Interval = Interval { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
+    pub const ENTIRE: Interval = Interval {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
 
     /// The point `[x, x]`.
     pub fn point(x: f64) -> Interval {
@@ -85,7 +88,12 @@ impl Interval {
     /// `self / d` for an interval `d` of positive numbers.
     pub fn div_positive(self, d: Interval) -> Interval {
         debug_assert!(d.lo > 0.0);
-        let c = [self.lo / d.lo, self.lo / d.hi, self.hi / d.lo, self.hi / d.hi];
+        let c = [
+            self.lo / d.lo,
+            self.lo / d.hi,
+            self.hi / d.lo,
+            self.hi / d.hi,
+        ];
         Interval::hull_widened(c)
     }
     fn hull_widened(c: [f64; 4]) -> Interval {
@@ -94,7 +102,10 @@ impl Interval {
         }
         let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = c.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Interval { lo: lo.next_down(), hi: hi.next_up() }
+        Interval {
+            lo: lo.next_down(),
+            hi: hi.next_up(),
+        }
     }
     /// Midpoint (not certified).
     pub fn mid(&self) -> f64 {
@@ -123,7 +134,10 @@ impl Interval {
     }
     /// Smallest interval holding both.
     pub fn hull(&self, o: &Interval) -> Interval {
-        Interval { lo: self.lo.min(o.lo), hi: self.hi.max(o.hi) }
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
     /// `self²` (tighter than `self · self` when the interval holds zero).
     pub fn square(self) -> Interval {
@@ -131,18 +145,33 @@ impl Interval {
         if self.contains_zero() {
             Interval { lo: 0.0, hi: m.hi }
         } else {
-            Interval { lo: m.lo.max(0.0), hi: m.hi }
+            Interval {
+                lo: m.lo.max(0.0),
+                hi: m.hi,
+            }
         }
     }
     /// `(self + o) / 2`: the de Casteljau step.
     pub fn average(self, o: Interval) -> Interval {
         let s = self + o;
-        Interval { lo: s.lo * 0.5, hi: s.hi * 0.5 }.widen_if_tiny()
+        Interval {
+            lo: s.lo * 0.5,
+            hi: s.hi * 0.5,
+        }
+        .widen_if_tiny()
     }
     fn widen_if_tiny(self) -> Interval {
         // Halving is exact except in the subnormal range.
-        let lo = if self.lo != 0.0 && self.lo.abs() < f64::MIN_POSITIVE { self.lo.next_down() } else { self.lo };
-        let hi = if self.hi != 0.0 && self.hi.abs() < f64::MIN_POSITIVE { self.hi.next_up() } else { self.hi };
+        let lo = if self.lo != 0.0 && self.lo.abs() < f64::MIN_POSITIVE {
+            self.lo.next_down()
+        } else {
+            self.lo
+        };
+        let hi = if self.hi != 0.0 && self.hi.abs() < f64::MIN_POSITIVE {
+            self.hi.next_up()
+        } else {
+            self.hi
+        };
         Interval { lo, hi }
     }
 }
@@ -162,13 +191,21 @@ impl Sub for Interval {
 impl Neg for Interval {
     type Output = Interval;
     fn neg(self) -> Interval {
-        Interval { lo: -self.hi, hi: -self.lo }
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
     }
 }
 impl Mul for Interval {
     type Output = Interval;
     fn mul(self, o: Interval) -> Interval {
-        let c = [self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi];
+        let c = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
         if c.iter().any(|v| v.is_nan()) {
             // 0 · ∞: the operands' product set is still bounded by what we
             // can say; be safe.
@@ -188,7 +225,10 @@ mod tests {
         let x = Int::from(3).pow(700); // about 2^1109: beyond f64
         let i = Interval::from_int_scaled(&x, 1100);
         let approx = (700.0 * 3f64.log2() - 1100.0).exp2();
-        assert!(i.lo <= approx * (1.0 + 1e-9) && i.hi >= approx * (1.0 - 1e-9), "{i:?} {approx}");
+        assert!(
+            i.lo <= approx * (1.0 + 1e-9) && i.hi >= approx * (1.0 - 1e-9),
+            "{i:?} {approx}"
+        );
         assert!(Interval::from_int(&x).hi.is_infinite());
         assert_eq!(Interval::from_int(&-x).sign(), Some(-1));
     }

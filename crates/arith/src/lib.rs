@@ -23,4 +23,8 @@ pub use rat::{ParseRatError, Rat};
 pub use ring::Ring;
 
 /// The name of the big-integer kernel in this build: `"num-bigint"` or `"gmp"`.
-pub const BACKEND: &str = if cfg!(feature = "gmp") { "gmp" } else { "num-bigint" };
+pub const BACKEND: &str = if cfg!(feature = "gmp") {
+    "gmp"
+} else {
+    "num-bigint"
+};

@@ -75,7 +75,10 @@ impl Rat {
     }
     /// An integer as a rational.
     pub fn from_int(n: Int) -> Rat {
-        Rat { num: n, den: Int::one() }
+        Rat {
+            num: n,
+            den: Int::one(),
+        }
     }
     /// `n / 2^k`.
     pub fn dyadic(n: Int, k: u64) -> Rat {
@@ -111,7 +114,10 @@ impl Rat {
     }
     /// `|self|`.
     pub fn abs(&self) -> Rat {
-        Rat { num: self.num.abs(), den: self.den.clone() }
+        Rat {
+            num: self.num.abs(),
+            den: self.den.clone(),
+        }
     }
     /// `1 / self`, `None` for zero.
     pub fn recip(&self) -> Option<Rat> {
@@ -125,6 +131,40 @@ impl Rat {
     pub fn midpoint(a: &Rat, b: &Rat) -> Rat {
         let s = a + b;
         Rat::reduce(s.num, s.den.shl(1))
+    }
+    /// The simplest rational in the closed interval `[lo, hi]` (smallest
+    /// denominator, then smallest numerator magnitude), by the continued
+    /// fraction (Stern–Brocot) descent. If `[lo, hi]` is narrower than
+    /// `1/b²` and holds `a/b`, the answer is `a/b`: the way to recognise a
+    /// rational root from a small enclosure.
+    ///
+    /// ```
+    /// use ccd_arith::Rat;
+    /// let (lo, hi) = (Rat::from_frac(3333, 10000), Rat::from_frac(3334, 10000));
+    /// assert_eq!(Rat::simplest_in(&lo, &hi), Rat::from_frac(1, 3));
+    /// ```
+    pub fn simplest_in(lo: &Rat, hi: &Rat) -> Rat {
+        debug_assert!(lo <= hi);
+        if lo.signum() <= 0 && hi.signum() >= 0 {
+            return Rat::zero();
+        }
+        if hi.signum() < 0 {
+            return -Rat::simplest_in(&-hi, &-lo);
+        }
+        let fl = lo.floor();
+        if lo.is_integer() {
+            return lo.clone();
+        }
+        let next = Rat::from_int(&fl + &Int::one());
+        if next <= *hi {
+            return next;
+        }
+        // lo, hi in (fl, fl + 1): fl + 1 / simplest(1/(hi − fl), 1/(lo − fl)).
+        let f = Rat::from_int(fl);
+        let inv_hi = (hi - &f).recip().expect("hi > fl");
+        let inv_lo = (lo - &f).recip().expect("lo > fl");
+        let inner = Rat::simplest_in(&inv_hi, &inv_lo);
+        &f + &inner.recip().expect("inner >= 1")
     }
     /// `self · 2^k` for a signed `k`.
     pub fn mul_pow2(&self, k: i64) -> Rat {
@@ -146,7 +186,11 @@ impl Rat {
         let bits = x.to_bits();
         let exp = ((bits >> 52) & 0x7ff) as i64;
         let frac = bits & ((1u64 << 52) - 1);
-        let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
+        let (m, e) = if exp == 0 {
+            (frac, -1074)
+        } else {
+            (frac | (1u64 << 52), exp - 1075)
+        };
         let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
         Some(if x < 0.0 { -v } else { v })
     }
@@ -187,7 +231,10 @@ impl Rat {
             return Err(ParseRatError::Empty);
         }
         if t.len() > Rat::MAX_TEXT {
-            return Err(ParseRatError::TooLarge(format!("{}…", t.chars().take(32).collect::<String>())));
+            return Err(ParseRatError::TooLarge(format!(
+                "{}…",
+                t.chars().take(32).collect::<String>()
+            )));
         }
         let lower = t.to_ascii_lowercase();
         let unsigned = lower.trim_start_matches(['+', '-']);
@@ -242,7 +289,11 @@ impl Rat {
             num = -num;
         }
         let p10 = Int::pow10(exp.unsigned_abs() as u32);
-        Ok(if exp >= 0 { Rat::from_int(num * p10) } else { Rat::reduce(num, p10) })
+        Ok(if exp >= 0 {
+            Rat::from_int(num * p10)
+        } else {
+            Rat::reduce(num, p10)
+        })
     }
 }
 
@@ -326,13 +377,19 @@ impl Div<&Rat> for &Rat {
 impl Neg for &Rat {
     type Output = Rat;
     fn neg(self) -> Rat {
-        Rat { num: -&self.num, den: self.den.clone() }
+        Rat {
+            num: -&self.num,
+            den: self.den.clone(),
+        }
     }
 }
 impl Neg for Rat {
     type Output = Rat;
     fn neg(self) -> Rat {
-        Rat { num: -self.num, den: self.den }
+        Rat {
+            num: -self.num,
+            den: self.den,
+        }
     }
 }
 macro_rules! owned_rat_ops {
@@ -370,15 +427,33 @@ mod tests {
     #[test]
     fn rejects_what_the_contract_rejects() {
         assert_eq!(Rat::parse_exact(""), Err(ParseRatError::Empty));
-        assert!(matches!(Rat::parse_exact("inf"), Err(ParseRatError::NotFinite(_))));
-        assert!(matches!(Rat::parse_exact("-nan"), Err(ParseRatError::NotFinite(_))));
-        assert!(matches!(Rat::parse_exact("1/0"), Err(ParseRatError::ZeroDenominator(_))));
-        assert!(matches!(Rat::parse_exact("1e999999999"), Err(ParseRatError::TooLarge(_))));
+        assert!(matches!(
+            Rat::parse_exact("inf"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("-nan"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("1/0"),
+            Err(ParseRatError::ZeroDenominator(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("1e999999999"),
+            Err(ParseRatError::TooLarge(_))
+        ));
         // Over-long text cut for the message at a character boundary, not a byte.
         let long = format!("1{}", "é".repeat(3000));
-        assert!(matches!(Rat::parse_exact(&long), Err(ParseRatError::TooLarge(_))));
+        assert!(matches!(
+            Rat::parse_exact(&long),
+            Err(ParseRatError::TooLarge(_))
+        ));
         for bad in ["abc", "1/-2", "1.2.3", "e5", "1e", "--1", "1/2/3", "0x1"] {
-            assert!(matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))), "{bad}");
+            assert!(
+                matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))),
+                "{bad}"
+            );
         }
     }
 
@@ -391,7 +466,28 @@ mod tests {
         assert_eq!(Rat::zero().to_decimal(3), "0.000");
     }
 
+    #[test]
+    fn simplest_rationals() {
+        let s = |a: (i64, i64), b: (i64, i64)| {
+            Rat::simplest_in(&Rat::from_frac(a.0, a.1), &Rat::from_frac(b.0, b.1))
+        };
+        assert_eq!(s((1, 3), (1, 2)), Rat::from_frac(1, 2));
+        assert_eq!(s((-7, 2), (-3, 1)), Rat::from(-3));
+        assert_eq!(s((-1, 2), (1, 3)), Rat::zero());
+        assert_eq!(s((7, 10), (3, 4)), Rat::from_frac(3, 4));
+        assert_eq!(s((22, 7), (22, 7)), Rat::from_frac(22, 7));
+        assert_eq!(s((314, 100), (315, 100)), Rat::from_frac(22, 7));
+    }
+
     proptest! {
+        #[test]
+        fn simplest_is_inside_and_recovers_small_fractions(a in -500i64..500, b in 1i64..500, w in 1i64..1000) {
+            let x = Rat::from_frac(a, b);
+            let eps = Rat::from_frac(1, 4 * b * b * w);
+            let s = Rat::simplest_in(&(&x - &eps), &(&x + &eps));
+            prop_assert_eq!(s, x);
+        }
+
         #[test]
         fn field_identities(a in -1000i64..1000, b in 1i64..1000, c in -1000i64..1000, d in 1i64..1000) {
             let (x, y) = (Rat::from_frac(a, b), Rat::from_frac(c, d));

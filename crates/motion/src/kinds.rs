@@ -25,7 +25,10 @@ pub struct Bezier<P> {
 impl<P> Bezier<P> {
     /// A curve that stays at one point.
     pub fn constant(p: P) -> Self {
-        Bezier { points: vec![p], weights: None }
+        Bezier {
+            points: vec![p],
+            weights: None,
+        }
     }
     /// Degree `n` (control points − 1).
     pub fn degree(&self) -> usize {
@@ -53,6 +56,9 @@ pub struct HelicalCenter {
 /// How one ellipsoid is placed over the span. Body points `Xbody` map to the
 /// world by `X = R(t)·Xbody + c(t)` (rigid kinds) or
 /// `X = (L(t)·Xbody + d(t)) / w(t)` (affine).
+// A scene holds two motions, built once: boxing the large helical variant
+// would only complicate constructing it.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Motion {
     /// Fixed placement: `R = R(orientation)`, `c = center`.
@@ -105,7 +111,10 @@ impl Motion {
     }
     /// Static at the origin, unrotated: what an omitted `motion` table means.
     pub fn at_origin() -> Motion {
-        Motion::Static { center: [Rat::zero(), Rat::zero(), Rat::zero()], orientation: Motion::identity() }
+        Motion::Static {
+            center: [Rat::zero(), Rat::zero(), Rat::zero()],
+            orientation: Motion::identity(),
+        }
     }
     /// `true` for the kinds whose placement is a rational function of t.
     pub fn is_rational(&self) -> bool {

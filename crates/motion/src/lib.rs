@@ -1,8 +1,17 @@
 //! Motion kinds (Bézier translation, rational rigid, rational affine,
-//! helical) and the moving quadric matrices they give.
+//! helical) and what they give the collision test: moving quadric matrices
+//! `A(t)`, `B(t)` and the characteristic polynomial `f(λ; t)` with the
+//! lowest degrees the scene allows.
 
 #![warn(missing_docs)]
 
+pub mod characteristic;
+pub mod curve;
+mod error;
 pub mod kinds;
+pub mod matrices;
 
+pub use characteristic::{char_poly, normalise, CharPoly};
+pub use error::MotionError;
 pub use kinds::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
+pub use matrices::{moving_quadric, placement_degree};

@@ -1,1 +1,15 @@
-//! Ellipsoids as quadric matrices, the characteristic quartic det(λA+B) and the static classifier of Theorem 3.10
+//! Ellipsoids as quadric matrices, the characteristic quartic
+//! `det(λA + B)` and the static classifier of Theorem 3.10 (Jia, Choi,
+//! Mourrain & Wang 2011): separate, externally touching or overlapping,
+//! decided exactly.
+
+#![warn(missing_docs)]
+
+mod ellipsoid;
+mod matrix;
+mod placement;
+
+pub use ccd_subres::Configuration;
+pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
+pub use matrix::{adj3, characteristic, congruence, det3, det4, Mat3, Mat4};
+pub use placement::{affine_inverse, body_diagonal, norm2, rigid_inverse, rotation_numerator};

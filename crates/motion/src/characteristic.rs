@@ -1,0 +1,235 @@
+//! The characteristic polynomial `f(λ; u) = det(λA(u) + B(u))` with
+//! coefficients in ℤ[u], normalised to the lowest degrees the scene allows.
+//!
+//! # Normalisation
+//!
+//! Writing `f = Σ c_k(u)·λ^k`, two changes keep every sign Theorem 3.10
+//! reads and every root sign and multiplicity in λ:
+//! * dividing all `c_k` by a common factor nonzero on the span
+//!   (the closed forms are homogeneous of even degree);
+//! * rescaling `λ ↦ λ·s(u)` with `s > 0` on the span, i.e.
+//!   `c_k ↦ c_k·s^k` (what scaling `A` by `s` does).
+//!
+//! For each factor `π` of `c_4 = det A` and `c_0 = det B` (these never vanish
+//! on the span, so `π` has a constant sign there and is made positive), with
+//! `v_k` its multiplicity in `c_k`, we replace `c_k` by `c_k·π^(α + β·k)`
+//! for the integers `α, β` that keep every `c_k` a polynomial
+//! (`α + β·k >= −v_k`) and minimise `α + 2β`: the closed forms are
+//! isobaric (weights 4, 4, 8, 8, 12 with degrees 2, 2, 4, 4, 6), so every
+//! `sr_ij` is multiplied by `π^(m·(α + 2β))` and `deg sr0` drops by
+//! `6·(α + 2β)·deg π`. This is what the paper's normalisation (make `f`
+//! monic, reduce, clear denominators) achieves, found without rational
+//! functions, and it also finds the λ-rescaling hidden in the homogeneous
+//! integer form of a rotation (`R = M(q)/|q|²`).
+
+use crate::error::MotionError;
+use crate::kinds::Body;
+use crate::matrices::moving_quadric;
+use ccd_arith::{Int, Rat};
+use ccd_poly::ZPoly;
+use ccd_quadric::{characteristic, Mat4};
+
+/// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in ℤ[u],
+/// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CharPoly {
+    /// Coefficients, high → low in λ.
+    pub coeffs: [ZPoly; 5],
+}
+
+impl CharPoly {
+    /// `det(λA + B)` of two moving quadrics, normalised (module docs).
+    pub fn new(a: &Mat4<ZPoly>, b: &Mat4<ZPoly>) -> CharPoly {
+        CharPoly {
+            coeffs: normalise(characteristic(a, b)),
+        }
+    }
+
+    /// `deg_t f`: the largest degree of a coefficient.
+    pub fn degree(&self) -> usize {
+        self.coeffs
+            .iter()
+            .filter_map(ZPoly::degree)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// The coefficients at a rational `u`, exactly.
+    pub fn at(&self, u: &Rat) -> [Rat; 5] {
+        self.coeffs.each_ref().map(|c| c.eval_rat(u))
+    }
+}
+
+/// `f(λ; u)` of two moving bodies, normalised (module docs).
+pub fn char_poly(a: &Body, b: &Body, span: &[Rat; 2]) -> Result<CharPoly, MotionError> {
+    Ok(CharPoly::new(
+        &moving_quadric(a, span)?,
+        &moving_quadric(b, span)?,
+    ))
+}
+
+/// Squarefree factorisation (Yun): `p = Π fᵢ^i` up to a constant, `fᵢ`
+/// squarefree and pairwise coprime; returns the nonconstant `(fᵢ, i)`.
+pub fn squarefree_factors(p: &ZPoly) -> Vec<(ZPoly, usize)> {
+    let mut out = Vec::new();
+    if p.degree().unwrap_or(0) == 0 {
+        return out;
+    }
+    let p = p.primitive_part();
+    let mut c = p.gcd(&p.derivative());
+    let mut w = p.div_exact(&c).expect("gcd divides");
+    let mut i = 1;
+    while w.degree().unwrap_or(0) > 0 {
+        let y = w.gcd(&c);
+        let z = w.div_exact(&y).expect("gcd divides");
+        if z.degree().unwrap_or(0) > 0 {
+            out.push((z, i));
+        }
+        c = c.div_exact(&y).expect("gcd divides");
+        w = y;
+        i += 1;
+    }
+    out
+}
+
+/// Splits a list of polynomials into pairwise coprime nonconstant factors
+/// whose products generate the same multiplicative structure.
+fn coprime_basis(mut items: Vec<ZPoly>) -> Vec<ZPoly> {
+    let nonconstant = |p: &ZPoly| p.degree().unwrap_or(0) > 0;
+    items.retain(nonconstant);
+    let mut i = 0;
+    while i < items.len() {
+        let mut j = i + 1;
+        let mut split = false;
+        while j < items.len() {
+            let g = items[i].gcd(&items[j]);
+            if nonconstant(&g) {
+                let a = items[i].div_exact(&g).expect("gcd divides");
+                let b = items[j].div_exact(&g).expect("gcd divides");
+                items.swap_remove(j);
+                items.swap_remove(i);
+                items.extend([g, a, b].into_iter().filter(nonconstant));
+                split = true;
+                break;
+            }
+            j += 1;
+        }
+        if split {
+            i = 0;
+        } else {
+            i += 1;
+        }
+    }
+    items
+}
+
+/// How often `pi` divides `p` (`p ≠ 0`), and the cofactor.
+fn multiplicity(p: &ZPoly, pi: &ZPoly) -> (usize, ZPoly) {
+    let mut q = p.clone();
+    let mut v = 0;
+    while let Some(next) = q.div_exact(pi) {
+        q = next;
+        v += 1;
+    }
+    (v, q)
+}
+
+/// The exponents `α + β·k` (k = 0..4, low → high) minimising `α + 2β`
+/// subject to `α + β·k >= −v_k`, ties broken by the largest resulting degree.
+fn best_exponents(v: &[Option<usize>; 5], degs: &[usize; 5], deg_pi: usize) -> [i64; 5] {
+    let vmax = v.iter().flatten().copied().max().unwrap_or(0) as i64;
+    let mut best: Option<((i64, i64), [i64; 5])> = None;
+    for beta in -vmax..=vmax {
+        let alpha = (0..5)
+            .filter_map(|k| v[k].map(|vk| -(vk as i64) - beta * k as i64))
+            .max()
+            .unwrap_or(0);
+        let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
+        let maxdeg = (0..5)
+            .filter(|&k| v[k].is_some())
+            .map(|k| degs[k] as i64 + e[k] * deg_pi as i64)
+            .max()
+            .unwrap_or(0);
+        let key = (alpha + 2 * beta, maxdeg);
+        if best.as_ref().is_none_or(|(b, _)| key < *b) {
+            best = Some((key, e));
+        }
+    }
+    best.map_or([0; 5], |(_, e)| e)
+}
+
+/// The normalisation of the module docs, on `[c_4, …, c_0]`.
+pub fn normalise(f: [ZPoly; 5]) -> [ZPoly; 5] {
+    // Low → high for indexing by the power of λ.
+    let mut c: [ZPoly; 5] = std::array::from_fn(|k| f[4 - k].clone());
+    let candidates: Vec<ZPoly> = [&c[4], &c[0]]
+        .iter()
+        .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
+        .collect();
+    for pi in coprime_basis(candidates) {
+        // Positive on the span (it divides det A or det B, which do not vanish there).
+        let pi = if pi.sign_at(&Rat::from_frac(1, 2)) < 0 {
+            -&pi
+        } else {
+            pi
+        };
+        let mut v: [Option<usize>; 5] = [None; 5];
+        let mut cof: [ZPoly; 5] = std::array::from_fn(|_| ZPoly::zero());
+        for k in 0..5 {
+            if !c[k].is_zero() {
+                let (m, q) = multiplicity(&c[k], &pi);
+                v[k] = Some(m);
+                cof[k] = q;
+            }
+        }
+        let degs: [usize; 5] = std::array::from_fn(|k| c[k].degree().unwrap_or(0));
+        let e = best_exponents(&v, &degs, pi.degree().unwrap_or(0));
+        for k in 0..5 {
+            if let Some(vk) = v[k] {
+                let total = vk as i64 + e[k];
+                c[k] = &cof[k] * &pi.pow(total as u32);
+            }
+        }
+    }
+    // The common integer content (a positive constant).
+    let g = c.iter().fold(Int::zero(), |g, p| g.gcd(&p.content()));
+    if !g.is_zero() && !g.is_one() {
+        for p in c.iter_mut() {
+            *p = p.div_exact_int(&g);
+        }
+    }
+    std::array::from_fn(|k| c[4 - k].clone())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn yun_splits_multiplicities() {
+        let a = ZPoly::from_i64s(&[-1, 1]); // u - 1
+        let b = ZPoly::from_i64s(&[2, 1]); // u + 2
+        let p = &(&a.pow(3) * &b.pow(2)) * &ZPoly::from_i64s(&[1, 0, 1]);
+        let f = squarefree_factors(&p);
+        assert_eq!(f.len(), 3);
+        assert!(f.contains(&(ZPoly::from_i64s(&[1, 0, 1]), 1)));
+        assert!(f.contains(&(b.clone(), 2)));
+        assert!(f.contains(&(a.clone(), 3)));
+    }
+
+    #[test]
+    fn rescaling_removes_hidden_lambda_scale() {
+        // c_k = s^k · g_k with s = u² + 1: the λ-rescaling must undo it.
+        let s = ZPoly::from_i64s(&[1, 0, 1]);
+        let g = [
+            ZPoly::from_i64s(&[3]),
+            ZPoly::from_i64s(&[1, 1]),
+            ZPoly::from_i64s(&[2, 0, 1]),
+            ZPoly::from_i64s(&[5, 1]),
+            ZPoly::from_i64s(&[-7]),
+        ];
+        let f: [ZPoly; 5] = std::array::from_fn(|i| &g[i] * &s.pow((4 - i) as u32));
+        let n = normalise(f);
+        assert_eq!(n, g);
+    }
+}

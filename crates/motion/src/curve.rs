@@ -1,0 +1,90 @@
+//! Bézier curves over the span, in the power basis of `u ∈ [0, 1]`.
+
+use crate::kinds::Bezier;
+use ccd_arith::{Int, Rat};
+use ccd_poly::QPoly;
+
+/// `Σ Bᵢⁿ(u)·vᵢ` in the power basis: the coefficient of `uʲ` is
+/// `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`.
+pub fn bernstein_to_power(values: &[Rat]) -> QPoly {
+    let n = values.len().saturating_sub(1);
+    let binom = binomials(n);
+    let coeffs: Vec<Rat> = (0..=n)
+        .map(|j| {
+            let mut s = Rat::zero();
+            for (i, v) in values.iter().enumerate().take(j + 1) {
+                let c = Rat::from_int(binom[j][i].clone());
+                let term = &c * v;
+                s = if (j - i) % 2 == 0 {
+                    &s + &term
+                } else {
+                    &s - &term
+                };
+            }
+            &s * &Rat::from_int(binom[n][j].clone())
+        })
+        .collect();
+    QPoly::from_rats(&coeffs)
+}
+
+/// Pascal's triangle up to row `n`.
+fn binomials(n: usize) -> Vec<Vec<Int>> {
+    let mut rows: Vec<Vec<Int>> = vec![vec![Int::one()]];
+    for r in 1..=n {
+        let prev = &rows[r - 1];
+        let mut row = vec![Int::one(); r + 1];
+        for k in 1..r {
+            row[k] = &prev[k - 1] + &prev[k];
+        }
+        rows.push(row);
+    }
+    rows
+}
+
+/// A (rational) Bézier curve of `N`-vectors as polynomial numerators and
+/// one common denominator: the curve is `numerators / denominator`, the
+/// denominator `Σ Bᵢⁿ(u)·wᵢ` (1 without weights).
+pub struct PolyCurve<const N: usize> {
+    /// One numerator polynomial per coordinate.
+    pub numerators: [QPoly; N],
+    /// The weight curve.
+    pub denominator: QPoly,
+}
+
+/// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`).
+pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
+    let weight = |i: usize| curve.weights.as_ref().map_or(Rat::one(), |w| w[i].clone());
+    let numerators = std::array::from_fn(|k| {
+        let vals: Vec<Rat> = curve
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| &p[k] * &weight(i))
+            .collect();
+        bernstein_to_power(&vals)
+    });
+    let denominator = match &curve.weights {
+        Some(w) => bernstein_to_power(w),
+        None => QPoly::one(),
+    };
+    PolyCurve {
+        numerators,
+        denominator,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn power_form_interpolates_the_ends_and_midpoint() {
+        let v = [Rat::from(11), Rat::from(-1)];
+        let p = bernstein_to_power(&v);
+        assert_eq!(p.eval_rat(&Rat::zero()), Rat::from(11));
+        assert_eq!(p.eval_rat(&Rat::one()), Rat::from(-1));
+        // Quadratic: B(1/2) = (v0 + 2 v1 + v2)/4.
+        let q = bernstein_to_power(&[Rat::from(1), Rat::from(5), Rat::from(-3)]);
+        assert_eq!(q.eval_rat(&Rat::from_frac(1, 2)), Rat::from(2));
+    }
+}

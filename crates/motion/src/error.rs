@@ -1,0 +1,30 @@
+//! What can make a motion unusable over the span, decided exactly.
+
+/// A motion that does not define a valid moving ellipsoid over the span.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MotionError {
+    /// The quaternion curve is zero at some instant, so `R(q)` is undefined.
+    #[error("the quaternion curve vanishes at t ≈ {at}")]
+    QuaternionVanishes {
+        /// Approximate instant (span-relative parameter mapped to t).
+        at: f64,
+    },
+    /// `L(t)` is singular at some instant: the ellipsoid degenerates.
+    #[error("the affine matrix L(t) is singular at t ≈ {at}")]
+    SingularAffine {
+        /// Approximate instant.
+        at: f64,
+    },
+    /// The weight curve has a zero on the span.
+    #[error("the weight curve vanishes at t ≈ {at}")]
+    WeightVanishes {
+        /// Approximate instant.
+        at: f64,
+    },
+    /// A kind that has no exact rational form (helical) in the exact path.
+    #[error("the {kind} motion is not rational; it needs the interval path")]
+    NotRational {
+        /// The kind's name.
+        kind: &'static str,
+    },
+}

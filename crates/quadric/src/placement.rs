@@ -1,0 +1,94 @@
+//! Inverse placements: the matrices `N` with `Xbody ∝ N·X` (homogeneous
+//! coordinates, up to a positive scalar), for the rigid and affine kinds.
+//! Generic over the ring, so one code path serves static bodies (rational
+//! entries) and moving ones (entries polynomial in t).
+
+use crate::matrix::{adj3, det3, Mat3, Mat4};
+use ccd_arith::Ring;
+
+/// `M(q)`, the rotation numerator of the contract: `R(q) = M(q)/|q|²` for a
+/// quaternion `q = [w, x, y, z]` (not necessarily unit).
+pub fn rotation_numerator<R: Ring>(q: &[R; 4]) -> Mat3<R> {
+    let [w, x, y, z] = q;
+    let sq = |a: &R| a.times(a);
+    let (ww, xx, yy, zz) = (sq(w), sq(x), sq(y), sq(z));
+    let two = R::from_i64(2);
+    let tw = |a: &R, b: &R, c: &R, d: &R, plus: bool| {
+        let s = a.times(b);
+        let t = c.times(d);
+        two.times(&if plus { s.plus(&t) } else { s.minus(&t) })
+    };
+    [
+        [
+            ww.plus(&xx).minus(&yy).minus(&zz),
+            tw(x, y, w, z, false),
+            tw(x, z, w, y, true),
+        ],
+        [
+            tw(x, y, w, z, true),
+            ww.minus(&xx).plus(&yy).minus(&zz),
+            tw(y, z, w, x, false),
+        ],
+        [
+            tw(x, z, w, y, false),
+            tw(y, z, w, x, true),
+            ww.minus(&xx).minus(&yy).plus(&zz),
+        ],
+    ]
+}
+
+/// `|q|² = w² + x² + y² + z²`.
+pub fn norm2<R: Ring>(q: &[R; 4]) -> R {
+    q.iter().fold(R::zero(), |acc, c| acc.plus(&c.times(c)))
+}
+
+/// Inverse of the rigid placement `X = R·Xbody + C/w` with `R = M/n`
+/// (`n = |q|² > 0`, `w > 0`): `[[Rᵀ, −Rᵀc], [0, 1]]` times the positive
+/// factor `w·n`, i.e. `[[w·Mᵀ, −Mᵀ·C], [0, w·n]]`.
+pub fn rigid_inverse<R: Ring>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
+    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for i in 0..3 {
+        let mut t = R::zero();
+        for j in 0..3 {
+            // (Mᵀ)[i][j] = M[j][i]
+            out[i][j] = w.times(&m[j][i]);
+            t = t.plus(&m[j][i].times(&center[j]));
+        }
+        out[i][3] = t.negated();
+    }
+    out[3][3] = w.times(n);
+    out
+}
+
+/// Inverse of the affine placement `X = (L·Xbody + d)/w` up to the nonzero
+/// factor `w·det L` (whose square is what the quadric sees): the adjugate of
+/// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
+pub fn affine_inverse<R: Ring>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
+    let adj = adj3(l);
+    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for i in 0..3 {
+        let mut t = R::zero();
+        for j in 0..3 {
+            out[i][j] = w.times(&adj[i][j]);
+            t = t.plus(&adj[i][j].times(&d[j]));
+        }
+        out[i][3] = t.negated();
+    }
+    out[3][3] = det3(l);
+    out
+}
+
+/// The body quadric `diag(1/r0², 1/r1², 1/r2², −1)` times the positive
+/// factor `(r0·r1·r2)²`: `diag((r1r2)², (r0r2)², (r0r1)², −(r0r1r2)²)`.
+/// Interior points satisfy `Xᵀ D X < 0`.
+pub fn body_diagonal<R: Ring>(radii: &[R; 3]) -> [R; 4] {
+    let [r0, r1, r2] = radii;
+    let sq = |a: &R| a.times(a);
+    let all = r0.times(r1).times(r2);
+    [
+        sq(&r1.times(r2)),
+        sq(&r0.times(r2)),
+        sq(&r0.times(r1)),
+        sq(&all).negated(),
+    ]
+}

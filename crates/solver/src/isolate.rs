@@ -1,0 +1,240 @@
+//! Real root isolation by Bernstein subdivision and Descartes' rule of signs.
+//!
+//! For a squarefree polynomial `p` of degree `n` with Bernstein coefficients
+//! `b_0..b_n` over `[lo, hi]`, the number of roots in the open interval is
+//! `Var(b) − 2k` for some `k >= 0` (Descartes' rule in Bernstein form), so
+//! `Var(b) = 0` proves there is none and `Var(b) = 1` proves there is exactly
+//! one. Otherwise the interval is halved by de Casteljau's algorithm. For a
+//! squarefree `p` this terminates (the "two-circle" theorem).
+//!
+//! Roots come out lazily and in increasing order (depth-first, left half
+//! first), so a caller that wants only the earliest root isolates no other.
+//!
+//! Every node first tries the `f64`-interval filter; a node with a
+//! coefficient whose sign the filter cannot prove is recomputed in exact
+//! integers, and stays exact while its signs need it.
+
+use crate::float_bernstein::FloatBernstein;
+use crate::root::RealRoot;
+use ccd_arith::{Interval, Rat};
+use ccd_poly::{Bernstein, ZPoly};
+use std::sync::Arc;
+
+/// Counters of one isolation, for benchmarks and design notes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct IsolationStats {
+    /// Subdivision nodes visited.
+    pub nodes: usize,
+    /// Nodes whose coefficients were computed in exact integers.
+    pub exact_nodes: usize,
+    /// Exact evaluations at a split point the filter could not sign.
+    pub exact_midpoints: usize,
+}
+
+enum Coeffs {
+    Float(FloatBernstein),
+    Exact(Bernstein),
+}
+
+struct Node {
+    lo: Rat,
+    hi: Rat,
+    coeffs: Coeffs,
+}
+
+enum Item {
+    Root(RealRoot),
+    Node(Node),
+}
+
+/// Sign variations of a sign sequence, zeros skipped.
+fn variations(signs: &[i32]) -> usize {
+    let mut last = 0;
+    let mut v = 0;
+    for &s in signs {
+        if s != 0 {
+            if last != 0 && s != last {
+                v += 1;
+            }
+            last = s;
+        }
+    }
+    v
+}
+
+impl Node {
+    fn exact(p: &ZPoly, lo: Rat, hi: Rat) -> Node {
+        let b = Bernstein::from_power(p, &lo, &hi);
+        Node {
+            lo,
+            hi,
+            coeffs: Coeffs::Exact(b),
+        }
+    }
+
+    /// Prefers the float form of exact coefficients whenever the filter can
+    /// sign every coefficient.
+    fn from_exact_bernstein(b: Bernstein) -> Node {
+        let (lo, hi) = (b.lo().clone(), b.hi().clone());
+        let f = FloatBernstein::from_exact(b.coeffs(), b.scale().signum());
+        let coeffs = if f.signs().is_some() {
+            Coeffs::Float(f)
+        } else {
+            Coeffs::Exact(b)
+        };
+        Node { lo, hi, coeffs }
+    }
+
+    fn signs(&self) -> Option<Vec<i32>> {
+        match &self.coeffs {
+            Coeffs::Float(f) => f.signs(),
+            Coeffs::Exact(b) => {
+                let s = b.scale().signum();
+                Some(b.coeffs().iter().map(|c| c.signum() * s).collect())
+            }
+        }
+    }
+
+    /// Halves the node; returns the children and the sign of `p` at the
+    /// split point when the coefficients prove it.
+    fn split(self) -> (Node, Node, Option<i32>) {
+        let mid = Rat::midpoint(&self.lo, &self.hi);
+        match self.coeffs {
+            Coeffs::Float(f) => {
+                let (l, r) = f.split_half();
+                let s = l.coeffs.last().and_then(Interval::sign);
+                let left = Node {
+                    lo: self.lo,
+                    hi: mid.clone(),
+                    coeffs: Coeffs::Float(l),
+                };
+                let right = Node {
+                    lo: mid,
+                    hi: self.hi,
+                    coeffs: Coeffs::Float(r),
+                };
+                (left, right, s)
+            }
+            Coeffs::Exact(b) => {
+                let (l, r) = b.split_half();
+                let s = l.sign_at_hi();
+                (
+                    Node::from_exact_bernstein(l),
+                    Node::from_exact_bernstein(r),
+                    Some(s),
+                )
+            }
+        }
+    }
+
+    /// Marks the shared endpoint as an exact root in the float form.
+    fn set_endpoint_zero(&mut self, at_hi: bool) {
+        if let Coeffs::Float(f) = &mut self.coeffs {
+            let i = if at_hi { f.coeffs.len() - 1 } else { 0 };
+            f.coeffs[i] = Interval::point(0.0);
+        }
+    }
+}
+
+/// The real roots of a squarefree polynomial in a closed interval, isolated
+/// lazily in increasing order. Built by [`crate::isolate`].
+pub struct RootIter {
+    poly: Arc<ZPoly>,
+    stack: Vec<Item>,
+    stats: IsolationStats,
+}
+
+impl RootIter {
+    /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
+    pub(crate) fn new(poly: Arc<ZPoly>, lo: &Rat, hi: &Rat) -> RootIter {
+        let root = Node::exact(&poly, lo.clone(), hi.clone());
+        let (first, last) = match &root.coeffs {
+            Coeffs::Exact(b) => (b.sign_at_lo(), b.sign_at_hi()),
+            Coeffs::Float(_) => unreachable!("Node::exact builds exact coefficients"),
+        };
+        let mut stack = Vec::new();
+        if last == 0 {
+            stack.push(Item::Root(RealRoot::exact(poly.clone(), hi.clone())));
+        }
+        let Coeffs::Exact(b) = root.coeffs else {
+            unreachable!("exact root node")
+        };
+        stack.push(Item::Node(Node::from_exact_bernstein(b)));
+        if first == 0 {
+            stack.push(Item::Root(RealRoot::exact(poly.clone(), lo.clone())));
+        }
+        RootIter {
+            poly,
+            stack,
+            stats: IsolationStats::default(),
+        }
+    }
+
+    /// What the isolation has cost so far.
+    pub fn stats(&self) -> IsolationStats {
+        self.stats
+    }
+}
+
+impl Iterator for RootIter {
+    type Item = RealRoot;
+
+    fn next(&mut self) -> Option<RealRoot> {
+        while let Some(item) = self.stack.pop() {
+            let node = match item {
+                Item::Root(r) => return Some(r),
+                Item::Node(n) => n,
+            };
+            self.stats.nodes += 1;
+            let Some(signs) = node.signs() else {
+                // The filter cannot sign a coefficient: redo this node exactly.
+                self.stats.exact_nodes += 1;
+                self.stack
+                    .push(Item::Node(Node::exact(&self.poly, node.lo, node.hi)));
+                continue;
+            };
+            let var = variations(&signs);
+            if var == 0 {
+                continue;
+            }
+            let (first, last) = (signs[0], signs[signs.len() - 1]);
+            if var == 1 && first != 0 && last != 0 {
+                return Some(RealRoot::isolated(
+                    self.poly.clone(),
+                    node.lo,
+                    node.hi,
+                    first,
+                ));
+            }
+            let mid = Rat::midpoint(&node.lo, &node.hi);
+            let (mut left, mut right, mid_sign) = node.split();
+            let mid_sign = mid_sign.unwrap_or_else(|| {
+                self.stats.exact_midpoints += 1;
+                self.poly.sign_at(&mid)
+            });
+            if mid_sign == 0 {
+                right.set_endpoint_zero(false);
+            }
+            self.stack.push(Item::Node(right));
+            if mid_sign == 0 {
+                left.set_endpoint_zero(true);
+                self.stack
+                    .push(Item::Root(RealRoot::exact(self.poly.clone(), mid)));
+            }
+            self.stack.push(Item::Node(left));
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::variations;
+
+    #[test]
+    fn variations_skip_zeros() {
+        assert_eq!(variations(&[1, 0, -1, 0, 0, 1]), 2);
+        assert_eq!(variations(&[0, 0]), 0);
+        assert_eq!(variations(&[-1, -1, 1]), 1);
+    }
+}

@@ -1,0 +1,132 @@
+//! Isolation, refinement and sign decisions against roots known by
+//! construction.
+
+use crate::{has_root_in, isolate, SolverError};
+use ccd_arith::{Int, Rat};
+use ccd_poly::ZPoly;
+use proptest::prelude::*;
+
+/// `q·t − p`, the linear factor with root `p/q`.
+fn linear(r: &Rat) -> ZPoly {
+    ZPoly::new(vec![-r.numer().clone(), r.denom().clone()])
+}
+
+fn product(factors: &[(Rat, u32)]) -> ZPoly {
+    factors
+        .iter()
+        .fold(ZPoly::one(), |acc, (r, m)| &acc * &linear(r).pow(*m))
+}
+
+fn all_roots(p: &ZPoly, lo: &Rat, hi: &Rat) -> Vec<crate::RealRoot> {
+    isolate(p, lo, hi).expect("nonzero").collect()
+}
+
+#[test]
+fn exact_roots_at_ends_and_split_points() {
+    let roots = [
+        Rat::zero(),
+        Rat::from_frac(1, 4),
+        Rat::from_frac(1, 2),
+        Rat::one(),
+    ];
+    let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
+    let found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 4);
+    for (f, r) in found.iter().zip(&roots) {
+        assert_eq!(f.exact_value(), Some(r), "{f:?}");
+    }
+}
+
+#[test]
+fn multiple_roots_are_found_once() {
+    let p = product(&[(Rat::from_frac(1, 3), 3), (Rat::from_frac(2, 3), 2)]);
+    let found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 2);
+    assert!(found[0].lo() <= &Rat::from_frac(1, 3) && &Rat::from_frac(1, 3) <= found[0].hi());
+}
+
+#[test]
+fn irrational_roots_refine_to_any_width() {
+    // t² − 2 on [0, 2]: √2.
+    let p = ZPoly::from_i64s(&[-2, 0, 1]);
+    let mut r = all_roots(&p, &Rat::zero(), &Rat::from(2)).remove(0);
+    let w = Rat::new(Int::one(), Int::pow10(60)).unwrap();
+    r.refine_to(&w);
+    assert!(r.width() <= w);
+    // lo² < 2 < hi², exactly.
+    assert!(r.lo() * r.lo() < Rat::from(2) && r.hi() * r.hi() > Rat::from(2));
+}
+
+#[test]
+fn identically_zero_and_empty_interval_are_errors() {
+    assert!(matches!(
+        isolate(&ZPoly::zero(), &Rat::zero(), &Rat::one()),
+        Err(SolverError::IdenticallyZero)
+    ));
+    assert!(matches!(
+        isolate(&ZPoly::x(), &Rat::one(), &Rat::one()),
+        Err(SolverError::EmptyInterval)
+    ));
+    assert!(!has_root_in(&ZPoly::from_i64s(&[5]), &Rat::zero(), &Rat::one()).unwrap());
+    assert!(!has_root_in(&ZPoly::from_i64s(&[1, 0, 1]), &Rat::from(-9), &Rat::from(9)).unwrap());
+}
+
+#[test]
+fn sign_decisions_at_algebraic_roots() {
+    // α = √2 − 1 ∈ (0, 1), root of t² + 2t − 1.
+    let p = ZPoly::from_i64s(&[-1, 2, 1]);
+    let mut alpha = all_roots(&p, &Rat::zero(), &Rat::one()).remove(0);
+    // q vanishes at α: (t² + 2t − 1)(t − 5).
+    let q = &p * &ZPoly::from_i64s(&[-5, 1]);
+    assert_eq!(alpha.sign_of(&q), 0);
+    // 1000 t − 414 > 0 at α ≈ 0.41421; 1000 t − 415 < 0.
+    assert_eq!(alpha.sign_of(&ZPoly::from_i64s(&[-414, 1000])), 1);
+    assert_eq!(alpha.sign_of(&ZPoly::from_i64s(&[-415, 1000])), -1);
+    // A near miss: a rational 1e-40 away from α.
+    let mut near = alpha.clone();
+    near.refine_to(&Rat::new(Int::one(), Int::pow10(50)).unwrap());
+    let c = near.lo() - &Rat::new(Int::one(), Int::pow10(40)).unwrap();
+    assert_eq!(alpha.sign_of(&linear(&c)), 1);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Distinct rational roots with multiplicities, times an irreducible
+    /// quadratic: isolation finds exactly the distinct roots in [0, 1], in
+    /// order, each enclosed.
+    #[test]
+    fn isolates_constructed_roots(raw in proptest::collection::vec((0i64..=60, 1i64..=60, 1u32..=3), 1..7), shift in 1i64..5) {
+        let mut roots: Vec<(Rat, u32)> = Vec::new();
+        for (p, q, m) in raw {
+            let r = Rat::from_frac(p.min(q), q);
+            if !roots.iter().any(|(x, _)| *x == r) {
+                roots.push((r, m));
+            }
+        }
+        let poly = &product(&roots) * &ZPoly::from_i64s(&[shift, 0, 1]);
+        roots.sort();
+        let found = all_roots(&poly, &Rat::zero(), &Rat::one());
+        prop_assert_eq!(found.len(), roots.len());
+        for (f, (r, _)) in found.iter().zip(&roots) {
+            prop_assert!(f.lo() <= r && r <= f.hi());
+            prop_assert_eq!(f.exact_value().is_some(), f.lo() == f.hi());
+        }
+        // Sign of the derivative-free test polynomial t − c at each root.
+        for (mut f, (r, _)) in found.into_iter().zip(&roots) {
+            let c = Rat::from_frac(1, 3);
+            let expected = (r - &c).signum();
+            prop_assert_eq!(f.sign_of(&linear(&c)), expected);
+        }
+    }
+
+    /// First-root-only isolation returns the smallest root.
+    #[test]
+    fn first_root_is_smallest(a in 1i64..99, b in 1i64..99) {
+        let (x, y) = (Rat::from_frac(a, 100), Rat::from_frac(b, 100));
+        let p = &(&linear(&x) * &linear(&y)) * &ZPoly::from_i64s(&[-2, 0, 1]);
+        let first = isolate(&p, &Rat::zero(), &Rat::one()).unwrap().next().unwrap();
+        let m = if x < y { x } else { y };
+        prop_assert!(first.lo() <= &m && &m <= first.hi());
+    }
+}

@@ -1,0 +1,47 @@
+//! Errors of the front door: every one names what was wrong and where.
+
+use ccd_motion::MotionError;
+use ccd_scene::SceneError;
+
+/// Why a query has no answer.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CcdError {
+    /// The scene is not valid (the message starts with the field).
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// A motion degenerates somewhere on the span, found exactly.
+    #[error("field `{field}`: {source}")]
+    Motion {
+        /// The offending field, e.g. `b.motion.orientation`.
+        field: String,
+        /// What degenerates.
+        source: MotionError,
+    },
+    /// An option is out of range.
+    #[error("option `{option}`: {reason}")]
+    Option {
+        /// The option, e.g. `--digits`.
+        option: &'static str,
+        /// Why.
+        reason: String,
+    },
+    /// A broken invariant inside the engine (a bug: please report it).
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+impl CcdError {
+    /// Attaches the body (`a` or `b`) and the field that a motion error is about.
+    pub(crate) fn motion(body: &str, source: MotionError) -> CcdError {
+        let field = match source {
+            MotionError::QuaternionVanishes { .. } => "motion.orientation",
+            MotionError::SingularAffine { .. } => "motion.matrix",
+            MotionError::WeightVanishes { .. } => "motion.weights",
+            MotionError::NotRational { .. } => "motion.kind",
+        };
+        CcdError::Motion {
+            field: format!("{body}.{field}"),
+            source,
+        }
+    }
+}

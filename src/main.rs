@@ -1,0 +1,153 @@
+//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
+
+use ccd_exact::{run_toml, to_json, Options, Outcome};
+use std::process::ExitCode;
+
+const HELP: &str = "\
+ccd-exact: exact, certified continuous collision detection for two moving ellipsoids
+
+USAGE:
+    ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]
+
+OPTIONS:
+    --json            print the result as JSON (scene-format.md, format 1)
+    --digits N        enclose each contact instant to 1e-N of the span (default 15)
+    --first-contact   stop at the earliest instant the bodies are not separate
+    -h, --help        this help
+    -V, --version     the version
+
+EXAMPLES:
+    ccd-exact tests/scenes/paper-example-5-1.toml
+    ccd-exact tests/scenes/rigid-tumbling.toml --json --digits 30
+    ccd-exact tests/scenes/paper-example-5-1.toml --first-contact
+
+Exit status: 0 on success, 2 on bad input (the message names the field).";
+
+struct Args {
+    path: String,
+    json: bool,
+    options: Options,
+}
+
+fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, String> {
+    let mut path = None;
+    let mut json = false;
+    let mut options = Options::default();
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "-h" | "--help" => return Ok(None),
+            "-V" | "--version" => {
+                println!(
+                    "ccd-exact {} ({} integers)",
+                    env!("CARGO_PKG_VERSION"),
+                    ccd_arith::BACKEND
+                );
+                std::process::exit(0);
+            }
+            "--json" => json = true,
+            "--first-contact" => options.first_contact_only = true,
+            "--digits" => {
+                let v = args.next().ok_or("option `--digits` needs a value")?;
+                options.digits = v
+                    .parse()
+                    .ok()
+                    .filter(|d| *d <= Options::MAX_DIGITS)
+                    .ok_or_else(|| {
+                        format!(
+                            "option `--digits`: `{v}` is not a whole number from 0 to {}",
+                            Options::MAX_DIGITS
+                        )
+                    })?;
+            }
+            s if s.starts_with('-') => return Err(format!("unknown option `{s}` (see --help)")),
+            s => {
+                if path.replace(s.to_string()).is_some() {
+                    return Err("more than one scene file given".into());
+                }
+            }
+        }
+    }
+    let path = path.ok_or("no scene file given (see --help)")?;
+    Ok(Some(Args {
+        path,
+        json,
+        options,
+    }))
+}
+
+fn print_table(out: &Outcome) {
+    let s = &out.stats;
+    println!(
+        "span [{}, {}]; deg_t f = {}, deg sr0 = {}, branch: {}",
+        out.span[0],
+        out.span[1],
+        s.deg_f,
+        s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string()),
+        s.branch
+    );
+    println!();
+    println!("  {:<9} {:>20}  {:>20}", "state", "from", "to");
+    for seg in &out.timeline {
+        println!(
+            "  {:<9} {:>20}  {:>20}",
+            seg.state.name(),
+            seg.start.approx(12),
+            seg.end.approx(12)
+        );
+    }
+    println!();
+    if out.contacts.is_empty() {
+        println!("contacts: none");
+    }
+    for (k, c) in out.contacts.iter().enumerate() {
+        println!("contact {} ≈ {}", k + 1, c.approx(15));
+        println!("    lo = {}", c.lo);
+        println!("    hi = {}", c.hi);
+    }
+    match &out.first_contact {
+        Some(fc) => println!("first contact ≈ {}", fc.approx(15)),
+        None if out.collision_free => println!("collision-free over the span"),
+        None => {}
+    }
+    if !out.complete {
+        println!("(first contact only: the timeline stops there)");
+    }
+}
+
+fn main() -> ExitCode {
+    let args = match parse_args(std::env::args().skip(1)) {
+        Ok(Some(a)) => a,
+        Ok(None) => {
+            println!("{HELP}");
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            eprintln!("ccd-exact: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let text = match std::fs::read_to_string(&args.path) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("ccd-exact: cannot read `{}`: {e}", args.path);
+            return ExitCode::from(2);
+        }
+    };
+    match run_toml(&text, &args.options) {
+        Ok(out) => {
+            if args.json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default()
+                );
+            } else {
+                print_table(&out);
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("ccd-exact: {}: {e}", args.path);
+            ExitCode::from(2)
+        }
+    }
+}

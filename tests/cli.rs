@@ -1,0 +1,125 @@
+//! The `ccd-exact` binary: output formats, exit statuses, error messages.
+
+use serde_json::Value;
+use std::process::{Command, Output};
+
+fn cli(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ccd-exact"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn scene(name: &str) -> String {
+    format!("{}/tests/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn temp_scene(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("ccd-exact-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_string_lossy().into_owned()
+}
+
+#[test]
+fn json_follows_the_contract() {
+    let out = cli(&[&scene("paper-example-5-1.toml"), "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["format"], 1);
+    assert_eq!(v["span"], serde_json::json!(["0", "1"]));
+    assert_eq!(v["collision_free"], false);
+    let contacts = v["contacts"].as_array().unwrap();
+    assert_eq!(contacts.len(), 2);
+    for (c, paper) in contacts.iter().zip([0.5395042868, 0.8722604191]) {
+        let approx: f64 = c["approx"].as_str().unwrap().parse().unwrap();
+        assert!((approx - paper).abs() < 6e-11, "{c}");
+        // lo/hi are exact rationals p/q in lowest terms.
+        for k in ["lo", "hi"] {
+            let s = c[k].as_str().unwrap();
+            let r: ccd_arith::Rat = s.parse().unwrap();
+            assert_eq!(r.to_string(), s);
+        }
+    }
+    assert_eq!(v["first_contact"], contacts[0]);
+    let states: Vec<&str> = v["timeline"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["state"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        states,
+        ["separate", "touch", "overlap", "touch", "separate"]
+    );
+    assert_eq!(v["timeline"][0]["start"]["lo"], "0");
+}
+
+#[test]
+fn digits_controls_the_enclosure_width() {
+    let out = cli(&[&scene("paper-example-5-1.toml"), "--json", "--digits", "40"]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let c = &v["contacts"][0];
+    let lo: ccd_arith::Rat = c["lo"].as_str().unwrap().parse().unwrap();
+    let hi: ccd_arith::Rat = c["hi"].as_str().unwrap().parse().unwrap();
+    assert!(
+        &hi - &lo <= ccd_arith::Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(40)).unwrap()
+    );
+}
+
+#[test]
+fn the_table_is_readable() {
+    let out = cli(&[&scene("paper-example-5-1.toml")]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(out.status.success());
+    assert!(
+        text.contains("overlap") && text.contains("0.539504286"),
+        "{text}"
+    );
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_field() {
+    let cases = [
+        (
+            "radius.toml",
+            "[a]\nradii = [1, 0, 1]\n[b]\nradii = [1, 1, 1]\n",
+            "a.radii[1]",
+        ),
+        (
+            "kind.toml",
+            "[a]\nradii = [1, 1, 1]\nmotion = { kind = \"wobble\" }\n[b]\nradii = [1, 1, 1]\n",
+            "a.motion.kind",
+        ),
+        ("toml.toml", "this is not = = toml", "TOML"),
+        ("missing.toml", "[a]\nradii = [1, 1, 1]\n", "b"),
+    ];
+    for (name, text, needle) in cases {
+        let out = cli(&[&temp_scene(name, text)]);
+        assert_eq!(out.status.code(), Some(2), "{name}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{name}: {err}");
+        assert!(!err.contains("panicked"), "{name}: {err}");
+    }
+    for args in [
+        &["--digits", "x", "s.toml"][..],
+        &["--frobnicate"],
+        &[],
+        &["/nonexistent/scene.toml"],
+    ] {
+        let out = cli(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+}
+
+#[test]
+fn help_lists_examples() {
+    let out = cli(&["--help"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("EXAMPLES"));
+}
