@@ -2,6 +2,8 @@
 //! shipped scenes, and constructed degenerate scenes whose answers are known
 //! by construction.
 
+mod common;
+
 use ccd_arith::{Int, Rat};
 use ccd_exact::{run_toml, Options, Outcome, State};
 
@@ -100,9 +102,18 @@ fn paper_example_5_1_sr11_matches_the_printed_one() {
 
 #[test]
 fn rigid_tumbling_runs_and_is_consistent() {
-    let out = run(&scene("rigid-tumbling.toml"));
+    let text = scene("rigid-tumbling.toml");
+    let out = run(&text);
     assert_well_formed(&out);
-    assert!(out.stats.deg_sr0.is_some());
+    // One body turns by a linear quaternion and translates linearly: 6 / 36.
+    assert_eq!((out.stats.deg_f, out.stats.deg_sr0), (6, Some(36)));
+    let parsed = ccd_exact::Scene::from_toml(&text).unwrap();
+    for k in 1..64 {
+        let u = Rat::from_frac(k, 64);
+        if let Some(state) = common::state_at(&out, &u) {
+            assert_eq!(state, common::static_state(&parsed, &u), "u = {u}");
+        }
+    }
     for c in &out.contacts {
         assert!(c.width() <= eps(15));
     }
