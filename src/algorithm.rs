@@ -45,7 +45,7 @@ fn state_of(c: Configuration) -> State {
 
 /// The configuration at a rational parameter `u`, exactly (Theorem 3.10).
 fn state_at(f: &CharPoly, u: &Rat) -> State {
-    state_of(classify_quartic(&f.at(u), Rat::signum))
+    state_of(classify_quartic(&f.at_scaled(u), ccd_arith::Int::signum))
 }
 
 /// The sr polynomials of `f(λ; u)` (Section 4 closed forms over ℤ[u]).

@@ -58,6 +58,23 @@ impl Rat {
             num = -num;
             den = -den;
         }
+        // Dyadic denominators (every subdivision point, every float) need no
+        // gcd: strip the common power of two.
+        let dz = den.trailing_zeros().unwrap_or(0);
+        if den.bits() == dz + 1 {
+            if num.is_zero() {
+                return Rat {
+                    num,
+                    den: Int::one(),
+                };
+            }
+            let k = num.trailing_zeros().unwrap_or(0).min(dz);
+            if k > 0 {
+                num = num.shr_floor(k);
+                den = den.shr_floor(k);
+            }
+            return Rat { num, den };
+        }
         let g = num.gcd(&den);
         if !g.is_one() && !g.is_zero() {
             num = num.div_exact(&g);
@@ -151,20 +168,36 @@ impl Rat {
         if hi.signum() < 0 {
             return -Rat::simplest_in(&-hi, &-lo);
         }
-        let fl = lo.floor();
-        if lo.is_integer() {
-            return lo.clone();
+        // 0 < a/b <= c/d. Descend the continued fractions of both ends at
+        // once (integers only), accumulating the convergents h/k of the
+        // common prefix: x = t0 + 1/(t1 + 1/(…)), each level being
+        // `simplest(x) = t + 1/simplest(d/(c − t·d), b/(a − t·b))`.
+        let (mut a, mut b) = (lo.num.clone(), lo.den.clone());
+        let (mut c, mut d) = (hi.num.clone(), hi.den.clone());
+        let (mut h1, mut h2) = (Int::one(), Int::zero());
+        let (mut k1, mut k2) = (Int::zero(), Int::one());
+        loop {
+            let (t, r) = a.div_rem_trunc(&b);
+            // The last term: lo is an integer here, or the next integer fits below hi.
+            let last = if r.is_zero() {
+                Some(t.clone())
+            } else {
+                let t1 = &t + &Int::one();
+                (&t1 * &d <= c).then_some(t1)
+            };
+            let term = last.clone().unwrap_or_else(|| t.clone());
+            let h = &(&term * &h1) + &h2;
+            let k = &(&term * &k1) + &k2;
+            if last.is_some() {
+                // Convergents are in lowest terms with k > 0.
+                return Rat { num: h, den: k };
+            }
+            (h2, h1, k2, k1) = (h1, h, k1, k);
+            // Recurse on (d/(c − t·d), b/(a − t·b)): note the swap of ends.
+            let (na, nb) = (d.clone(), &c - &(&t * &d));
+            let (nc, nd) = (b, r);
+            (a, b, c, d) = (na, nb, nc, nd);
         }
-        let next = Rat::from_int(&fl + &Int::one());
-        if next <= *hi {
-            return next;
-        }
-        // lo, hi in (fl, fl + 1): fl + 1 / simplest(1/(hi − fl), 1/(lo − fl)).
-        let f = Rat::from_int(fl);
-        let inv_hi = (hi - &f).recip().expect("hi > fl");
-        let inv_lo = (lo - &f).recip().expect("lo > fl");
-        let inner = Rat::simplest_in(&inv_hi, &inv_lo);
-        &f + &inner.recip().expect("inner >= 1")
     }
     /// `self · 2^k` for a signed `k`.
     pub fn mul_pow2(&self, k: i64) -> Rat {
@@ -486,6 +519,23 @@ mod tests {
             let eps = Rat::from_frac(1, 4 * b * b * w);
             let s = Rat::simplest_in(&(&x - &eps), &(&x + &eps));
             prop_assert_eq!(s, x);
+        }
+
+        #[test]
+        fn simplest_is_simplest(a in -300i64..300, b in 1i64..60, c in 0i64..300, d in 1i64..60) {
+            let lo = Rat::from_frac(a, b);
+            let hi = &lo + &Rat::from_frac(c, d);
+            let s = Rat::simplest_in(&lo, &hi);
+            prop_assert!(lo <= s && s <= hi);
+            // No rational with a smaller denominator lies in [lo, hi].
+            let den = s.denom().to_i64().unwrap();
+            for q in 1..den {
+                let first = (&lo * &Rat::from(q)).numer().div_floor(&(&lo * &Rat::from(q)).denom().clone());
+                for p in [first.clone(), &first + &Int::one()] {
+                    let r = Rat::new(p, Int::from(q)).unwrap();
+                    prop_assert!(!(lo <= r && r <= hi), "{} simpler than {} in [{}, {}]", r, s, lo, hi);
+                }
+            }
         }
 
         #[test]

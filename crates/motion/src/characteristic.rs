@@ -58,6 +58,29 @@ impl CharPoly {
     pub fn at(&self, u: &Rat) -> [Rat; 5] {
         self.coeffs.each_ref().map(|c| c.eval_rat(u))
     }
+
+    /// The coefficients at `u = p/q` times the common positive factor
+    /// `q^deg`: integers with the signs and ratios of [`CharPoly::at`], which
+    /// is all Theorem 3.10 reads.
+    pub fn at_scaled(&self, u: &Rat) -> [Int; 5] {
+        let (p, q) = (u.numer(), u.denom());
+        let d = self.degree();
+        let qpow: Vec<Int> = std::iter::successors(Some(Int::one()), |x| Some(x * q))
+            .take(d + 1)
+            .collect();
+        self.coeffs.each_ref().map(|c| {
+            let cs = c.coeffs();
+            let Some(top) = cs.len().checked_sub(1) else {
+                return Int::zero();
+            };
+            // Σ c_i p^i q^(d − i), by Horner in p with the q powers folded in.
+            let mut acc = cs[top].clone();
+            for (i, ci) in cs.iter().enumerate().rev().skip(1) {
+                acc = &acc * p + ci * &qpow[top - i];
+            }
+            acc * &qpow[d - top]
+        })
+    }
 }
 
 /// `f(λ; u)` of two moving bodies, normalised (module docs).
@@ -231,5 +254,34 @@ mod tests {
         let f: [ZPoly; 5] = std::array::from_fn(|i| &g[i] * &s.pow((4 - i) as u32));
         let n = normalise(f);
         assert_eq!(n, g);
+    }
+
+    #[test]
+    fn scaled_evaluation_is_a_positive_multiple() {
+        let f = CharPoly {
+            coeffs: [
+                ZPoly::from_i64s(&[3]),
+                ZPoly::from_i64s(&[1, -4]),
+                ZPoly::from_i64s(&[2, 0, 1]),
+                ZPoly::from_i64s(&[5, 1]),
+                ZPoly::from_i64s(&[-7, 0, 0, 2]),
+            ],
+        };
+        for u in [
+            Rat::from_frac(1, 3),
+            Rat::from_frac(-5, 7),
+            Rat::from(2),
+            Rat::zero(),
+        ] {
+            let exact = f.at(&u);
+            let scaled = f.at_scaled(&u);
+            let factor = u.denom().pow(3);
+            for (e, s) in exact.iter().zip(&scaled) {
+                assert_eq!(
+                    &(e * &Rat::from_int(factor.clone())),
+                    &Rat::from_int(s.clone())
+                );
+            }
+        }
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::matrix::{characteristic, congruence, Mat4};
 use crate::placement::{body_diagonal, norm2, rigid_inverse, rotation_numerator};
-use ccd_arith::{Rat, Ring};
+use ccd_arith::{Int, Rat, Ring};
 use ccd_subres::{classify_with, closed_forms, sign_variations, Configuration, Quantity};
 
 /// An ellipsoid placed in space: semi-axes along its body axes, a centre,
@@ -36,6 +36,16 @@ impl Ellipsoid {
         let n = norm2(&self.orientation);
         let inv = rigid_inverse(&m, &n, &self.center, &Rat::one());
         congruence(&inv, &body_diagonal(&self.radii))
+    }
+
+    /// [`Ellipsoid::quadric_matrix`] times the positive integer that clears
+    /// its denominators: the form the exact tests compute with.
+    pub fn quadric_matrix_int(&self) -> Mat4<Int> {
+        let m = self.quadric_matrix();
+        let den = m.iter().flatten().fold(Int::one(), |l, x| {
+            (&l * x.denom()).div_exact(&l.gcd(x.denom()))
+        });
+        m.map(|row| row.map(|x| x.numer() * &den.div_exact(x.denom())))
     }
 }
 
@@ -71,6 +81,6 @@ pub fn classify_quartic<R: Ring>(f: &[R; 5], sign: impl Fn(&R) -> i32) -> Config
 /// assert_eq!(classify_pair(&unit(0), &unit(1)), Configuration::Overlap);
 /// ```
 pub fn classify_pair(a: &Ellipsoid, b: &Ellipsoid) -> Configuration {
-    let f = characteristic(&a.quadric_matrix(), &b.quadric_matrix());
-    classify_quartic(&f, Rat::signum)
+    let f = characteristic(&a.quadric_matrix_int(), &b.quadric_matrix_int());
+    classify_quartic(&f, Int::signum)
 }

@@ -1,0 +1,61 @@
+//! Timings of the exact path: one static classification, and full CCD and
+//! first-contact queries on the shipped rational scenes.
+//!
+//! `cargo bench --bench ccd` (default build) and
+//! `cargo bench --bench ccd --features gmp`.
+
+use ccd_arith::Rat;
+use ccd_exact::{run, Options, Scene};
+use ccd_quadric::{classify_pair, Ellipsoid};
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
+use std::time::Duration;
+
+fn scene(name: &str) -> Scene {
+    let path = format!("{}/tests/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    Scene::from_toml(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn r(s: &str) -> Rat {
+    s.parse().expect("a rational")
+}
+
+fn static_classification(c: &mut Criterion) {
+    let a = Ellipsoid {
+        radii: [r("3"), r("1/2"), r("0.5")],
+        center: [r("0"), r("0"), r("0")],
+        orientation: [r("1"), r("0"), r("0"), r("0")],
+    };
+    let b = Ellipsoid {
+        radii: [r("2"), r("1.5"), r("0.25")],
+        center: [r("0.1"), r("1.05"), r("0.05")],
+        orientation: [r("1"), r("1/2"), r("0"), r("1/2")],
+    };
+    c.bench_function("static classification (exact)", |bench| {
+        bench.iter(|| classify_pair(black_box(&a), black_box(&b)))
+    });
+}
+
+fn ccd(c: &mut Criterion) {
+    let mut g = c.benchmark_group("ccd exact");
+    g.sample_size(30).measurement_time(Duration::from_secs(3));
+    for name in ["paper-example-5-1.toml", "rigid-tumbling.toml"] {
+        let s = scene(name);
+        let full = Options::default();
+        let first = Options {
+            first_contact_only: true,
+            ..Options::default()
+        };
+        g.bench_function(format!("{name} total"), |bench| {
+            bench.iter(|| run(black_box(&s), &full).expect("runs"))
+        });
+        g.bench_function(format!("{name} first contact"), |bench| {
+            bench.iter(|| run(black_box(&s), &first).expect("runs"))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, static_classification, ccd);
+criterion_main!(benches);
