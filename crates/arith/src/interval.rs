@@ -75,6 +75,10 @@ impl Interval {
             Interval { lo, hi }
         }
     }
+    /// A certified enclosure of a machine integer.
+    pub fn from_i64(v: i64) -> Interval {
+        Interval::from_int(&Int::from_i64(v))
+    }
     /// A certified enclosure of an integer.
     pub fn from_int(x: &Int) -> Interval {
         Interval::from_int_scaled(x, 0)
@@ -212,6 +216,42 @@ impl Mul for Interval {
             return Interval::ENTIRE;
         }
         Interval::hull_widened(c)
+    }
+}
+
+impl crate::RingOps for Interval {
+    fn zero() -> Self {
+        Interval::point(0.0)
+    }
+    fn one() -> Self {
+        Interval::point(1.0)
+    }
+    fn from_i64(v: i64) -> Self {
+        Interval::from_int(&Int::from_i64(v))
+    }
+    fn is_zero(&self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+    fn plus(&self, o: &Self) -> Self {
+        *self + *o
+    }
+    fn minus(&self, o: &Self) -> Self {
+        *self - *o
+    }
+    fn times(&self, o: &Self) -> Self {
+        *self * *o
+    }
+    fn negated(&self) -> Self {
+        -*self
+    }
+    fn div_small(&self, k: i64) -> Self {
+        let d = Interval::from_i64(k.abs());
+        let q = self.div_positive(d);
+        if k < 0 {
+            -q
+        } else {
+            q
+        }
     }
 }
 

@@ -20,7 +20,7 @@ mod ring;
 pub use int::Int;
 pub use interval::Interval;
 pub use rat::{ParseRatError, Rat};
-pub use ring::Ring;
+pub use ring::{Ring, RingOps};
 
 /// The name of the big-integer kernel in this build: `"num-bigint"` or `"gmp"`.
 pub const BACKEND: &str = if cfg!(feature = "gmp") {

@@ -1,20 +1,27 @@
-//! [`Ring`]: the exact commutative rings the generic algorithms (signed
-//! subresultants, determinants) run over: integers, rationals, polynomials.
+//! The algebra the generic algorithms run over.
+//!
+//! [`RingOps`]: addition, multiplication and division by small integers:
+//! enough for the closed forms of Section 4, quadric matrices and
+//! `det(λA + B)`. Exact rings, floating-point numbers, intervals (where
+//! every operation encloses the exact result) and dual numbers all have it,
+//! so one routine serves the exact, float and interval paths.
+//!
+//! [`Ring`]: an exact [`RingOps`] with exact division where it divides, for
+//! fraction-free elimination (subresultant determinants).
 
 use crate::{Int, Rat};
 
-/// An exact commutative ring with exact division where it divides.
-///
-/// The methods have their own names (not `add`, `mul`) so that they do not
-/// collide with the operator traits the concrete types also implement.
-pub trait Ring: Clone + PartialEq + std::fmt::Debug {
+/// Ring operations. The method names differ from `add`, `mul` so that they
+/// do not collide with the operator traits the types also implement.
+pub trait RingOps: Clone + std::fmt::Debug {
     /// The additive identity.
     fn zero() -> Self;
     /// The multiplicative identity.
     fn one() -> Self;
     /// The image of a machine integer.
     fn from_i64(v: i64) -> Self;
-    /// `self == 0`.
+    /// `self` is known to be exactly zero (lets sparse products skip work;
+    /// `false` is always a safe answer for approximate types).
     fn is_zero(&self) -> bool;
     /// `self + o`.
     fn plus(&self, o: &Self) -> Self;
@@ -24,66 +31,68 @@ pub trait Ring: Clone + PartialEq + std::fmt::Debug {
     fn times(&self, o: &Self) -> Self;
     /// `−self`.
     fn negated(&self) -> Self;
+    /// `self / k` for a small nonzero integer `k`; in an exact ring the
+    /// caller guarantees that `k` divides `self`.
+    fn div_small(&self, k: i64) -> Self;
+}
+
+/// An exact commutative ring with exact division where it divides.
+pub trait Ring: RingOps + PartialEq {
     /// `self / o` where the caller knows `o` divides `self` exactly
     /// (fraction-free elimination relies on it).
     fn div_exact(&self, o: &Self) -> Self;
 }
 
+/// Implements [`RingOps`] for a type whose references have the `+ − ×`
+/// and unary `−` operators, given its constants and its small division.
+#[macro_export]
+macro_rules! ring_ops_via_operators {
+    ($t:ty, zero: $zero:expr, one: $one:expr, from_i64: |$v:ident| $from:expr, is_zero: |$z:ident| $isz:expr, div_small: |$a:ident, $k:ident| $div:expr) => {
+        impl $crate::RingOps for $t {
+            fn zero() -> Self {
+                $zero
+            }
+            fn one() -> Self {
+                $one
+            }
+            fn from_i64($v: i64) -> Self {
+                $from
+            }
+            fn is_zero(&self) -> bool {
+                let $z = self;
+                $isz
+            }
+            fn plus(&self, o: &Self) -> Self {
+                self + o
+            }
+            fn minus(&self, o: &Self) -> Self {
+                self - o
+            }
+            fn times(&self, o: &Self) -> Self {
+                self * o
+            }
+            fn negated(&self) -> Self {
+                -self
+            }
+            fn div_small(&self, $k: i64) -> Self {
+                let $a = self;
+                $div
+            }
+        }
+    };
+}
+
+ring_ops_via_operators!(Int, zero: Int::zero(), one: Int::one(), from_i64: |v| Int::from_i64(v), is_zero: |x| Int::is_zero(x), div_small: |a, k| a.div_exact(&Int::from_i64(k)));
+ring_ops_via_operators!(Rat, zero: Rat::zero(), one: Rat::one(), from_i64: |v| Rat::from(v), is_zero: |x| Rat::is_zero(x), div_small: |a, k| a / &Rat::from(k));
+ring_ops_via_operators!(f64, zero: 0.0, one: 1.0, from_i64: |v| v as f64, is_zero: |x| *x == 0.0, div_small: |a, k| a / k as f64);
+
 impl Ring for Int {
-    fn zero() -> Self {
-        Int::zero()
-    }
-    fn one() -> Self {
-        Int::one()
-    }
-    fn from_i64(v: i64) -> Self {
-        Int::from_i64(v)
-    }
-    fn is_zero(&self) -> bool {
-        Int::is_zero(self)
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
     fn div_exact(&self, o: &Self) -> Self {
         Int::div_exact(self, o)
     }
 }
 
 impl Ring for Rat {
-    fn zero() -> Self {
-        Rat::zero()
-    }
-    fn one() -> Self {
-        Rat::one()
-    }
-    fn from_i64(v: i64) -> Self {
-        Rat::from(v)
-    }
-    fn is_zero(&self) -> bool {
-        Rat::is_zero(self)
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
     fn div_exact(&self, o: &Self) -> Self {
         self / o
     }

@@ -278,31 +278,9 @@ impl Neg for QPoly {
 }
 forward_binops!(QPoly);
 
+ccd_arith::ring_ops_via_operators!(QPoly, zero: QPoly::zero(), one: QPoly::one(), from_i64: |v| QPoly::constant(Rat::from(v)), is_zero: |x| QPoly::is_zero(x), div_small: |a, k| a.mul_rat(&Rat::from_frac(1, k)));
+
 impl Ring for QPoly {
-    fn zero() -> Self {
-        QPoly::zero()
-    }
-    fn one() -> Self {
-        QPoly::one()
-    }
-    fn from_i64(v: i64) -> Self {
-        QPoly::constant(Rat::from(v))
-    }
-    fn is_zero(&self) -> bool {
-        QPoly::is_zero(self)
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
     /// The exact quotient in `Q[t]`; panics if `o` does not divide `self`.
     fn div_exact(&self, o: &Self) -> Self {
         QPoly::div_exact(self, o)
@@ -314,6 +292,7 @@ impl Ring for QPoly {
 mod tests {
     use super::*;
     use crate::testutil::{rat, zpoly};
+    use ccd_arith::RingOps;
     use proptest::prelude::*;
 
     fn qpoly() -> impl Strategy<Value = QPoly> {
@@ -341,7 +320,10 @@ mod tests {
             QPoly::from_zpoly(&ZPoly::from_i64s(&[0, 0, 3])).derivative(),
             QPoly::from_zpoly(&ZPoly::from_i64s(&[0, 6]))
         );
-        assert_eq!(<QPoly as Ring>::from_i64(5), QPoly::constant(Rat::from(5)));
+        assert_eq!(
+            <QPoly as ccd_arith::RingOps>::from_i64(5),
+            QPoly::constant(Rat::from(5))
+        );
         assert!(QPoly::one().mul_rat(&Rat::zero()).is_zero());
     }
 

@@ -540,31 +540,9 @@ macro_rules! forward_binops {
 pub(crate) use forward_binops;
 forward_binops!(ZPoly);
 
+ccd_arith::ring_ops_via_operators!(ZPoly, zero: ZPoly::zero(), one: ZPoly::one(), from_i64: |v| ZPoly::constant(Int::from(v)), is_zero: |x| ZPoly::is_zero(x), div_small: |a, k| a.div_exact_int(&Int::from(k)));
+
 impl Ring for ZPoly {
-    fn zero() -> Self {
-        ZPoly::zero()
-    }
-    fn one() -> Self {
-        ZPoly::one()
-    }
-    fn from_i64(v: i64) -> Self {
-        ZPoly::constant(Int::from(v))
-    }
-    fn is_zero(&self) -> bool {
-        ZPoly::is_zero(self)
-    }
-    fn plus(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn minus(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn times(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn negated(&self) -> Self {
-        -self
-    }
     /// The exact quotient in `Z[t]`; panics if `o` does not divide `self`.
     fn div_exact(&self, o: &Self) -> Self {
         ZPoly::div_exact(self, o)
@@ -576,6 +554,7 @@ impl Ring for ZPoly {
 mod tests {
     use super::*;
     use crate::testutil::{f64_to_rat, rat, zpoly, zpoly_deg};
+    use ccd_arith::RingOps;
     use proptest::prelude::*;
 
     fn z(c: &[i64]) -> ZPoly {
@@ -596,7 +575,7 @@ mod tests {
         assert_eq!(ZPoly::x().pow(3), z(&[0, 0, 0, 1]));
         assert_eq!(z(&[1, 1]).pow(0), ZPoly::one());
         assert_eq!(z(&[0, 1, 1]).reverse(), z(&[1, 1]));
-        assert_eq!(<ZPoly as Ring>::from_i64(-2), z(&[-2]));
+        assert_eq!(<ZPoly as ccd_arith::RingOps>::from_i64(-2), z(&[-2]));
         assert_eq!(ZPoly::default(), ZPoly::zero());
         assert_eq!(
             z(&[6, -4, 2])

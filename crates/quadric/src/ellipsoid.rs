@@ -3,7 +3,7 @@
 
 use crate::matrix::{characteristic, congruence, Mat4};
 use crate::placement::{body_diagonal, norm2, rigid_inverse, rotation_numerator};
-use ccd_arith::{Int, Rat, Ring};
+use ccd_arith::{Int, Rat, RingOps};
 use ccd_subres::{classify_with, closed_forms, sign_variations, Configuration, Quantity};
 
 /// An ellipsoid placed in space: semi-axes along its body axes, a centre,
@@ -52,7 +52,7 @@ impl Ellipsoid {
 /// Classifies the characteristic quartic `[e, a, b, c, d]` (high → low) of
 /// two ellipsoids by Theorem 3.10, computing the closed forms of Section 4
 /// only as the decision asks for them. `sign` is the ring's sign function.
-pub fn classify_quartic<R: Ring>(f: &[R; 5], sign: impl Fn(&R) -> i32) -> Configuration {
+pub fn classify_quartic<R: RingOps>(f: &[R; 5], sign: impl Fn(&R) -> i32) -> Configuration {
     let inv = closed_forms(f);
     let answer = classify_with(|q| {
         Ok::<i32, std::convert::Infallible>(match q {

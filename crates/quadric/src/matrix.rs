@@ -1,8 +1,8 @@
-//! 4×4 matrices over any exact [`Ring`]: the congruence `Nᵀ·D·N` that turns
+//! 4×4 matrices over any [`RingOps`] (exact rings, floats, intervals): the congruence `Nᵀ·D·N` that turns
 //! a body quadric into a placed one, determinants by 2×2 minors, and the
 //! characteristic quartic `det(λA + B)`.
 
-use ccd_arith::Ring;
+use ccd_arith::RingOps;
 
 /// A 4×4 matrix, row-major.
 pub type Mat4<R> = [[R; 4]; 4];
@@ -13,7 +13,7 @@ pub type Mat3<R> = [[R; 3]; 3];
 /// change of coordinates `X ↦ N·X` (so if `N` maps world points to body
 /// points, this is the world quadric). Symmetric; the upper triangle is
 /// computed once.
-pub fn congruence<R: Ring>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
+pub fn congruence<R: RingOps>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
     // scaled[k][j] = d_k · N[k][j]
     let scaled: Vec<Vec<R>> = (0..4)
         .map(|k| (0..4).map(|j| d[k].times(&n[k][j])).collect())
@@ -35,7 +35,7 @@ pub fn congruence<R: Ring>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
 }
 
 /// The 2×2 minor of rows `r, r+1` and columns `i, j`.
-fn minor2<R: Ring>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
+fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
     m[r][i]
         .times(&m[r + 1][j])
         .minus(&m[r][j].times(&m[r + 1][i]))
@@ -43,7 +43,7 @@ fn minor2<R: Ring>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
 
 /// `det(m)` by Laplace expansion along the first two rows (2×2 minors):
 /// 30 multiplications.
-pub fn det4<R: Ring>(m: &Mat4<R>) -> R {
+pub fn det4<R: RingOps>(m: &Mat4<R>) -> R {
     /// Columns `(i, j)` of the top minor, `(k, l)` of the complementary
     /// bottom minor, and whether the permutation `(i j k l)` is even.
     type Pair = ((usize, usize), (usize, usize), bool);
@@ -68,7 +68,7 @@ pub fn det4<R: Ring>(m: &Mat4<R>) -> R {
 }
 
 /// `det(M)` of a 3×3 matrix.
-pub fn det3<R: Ring>(m: &Mat3<R>) -> R {
+pub fn det3<R: RingOps>(m: &Mat3<R>) -> R {
     let c0 = m[1][1].times(&m[2][2]).minus(&m[1][2].times(&m[2][1]));
     let c1 = m[1][0].times(&m[2][2]).minus(&m[1][2].times(&m[2][0]));
     let c2 = m[1][0].times(&m[2][1]).minus(&m[1][1].times(&m[2][0]));
@@ -79,7 +79,7 @@ pub fn det3<R: Ring>(m: &Mat3<R>) -> R {
 }
 
 /// The adjugate `adj(M)` of a 3×3 matrix (`M·adj(M) = det(M)·I`).
-pub fn adj3<R: Ring>(m: &Mat3<R>) -> Mat3<R> {
+pub fn adj3<R: RingOps>(m: &Mat3<R>) -> Mat3<R> {
     let cof = |r0: usize, r1: usize, c0: usize, c1: usize| {
         m[r0][c0]
             .times(&m[r1][c1])
@@ -101,12 +101,13 @@ pub fn adj3<R: Ring>(m: &Mat3<R>) -> Mat3<R> {
 /// quartic `det(λA + B) = e·λ⁴ + a·λ³ + b·λ² + c·λ + d` (Section 2).
 ///
 /// Computed from five determinants at `λ ∈ {0, ±1, ±2}` and exact
-/// interpolation: with `T1 = f(1) + f(−1) − 2f(0) = 2(e + b)`,
+/// interpolation (divisions by small integers only): with `T1 = f(1) + f(−1) − 2f(0) = 2(e + b)`,
 /// `T2 = f(2) + f(−2) − 2f(0) = 32e + 8b`, `U1 = f(1) − f(−1) = 2(a + c)`,
 /// `U2 = f(2) − f(−2) = 16a + 4c`: `e = (T2 − 4T1)/24`, `b = T1/2 − e`,
-/// `a = (U2 − 2U1)/12`, `c = U1/2 − a`. Every division is exact because the
-/// coefficients lie in the ring.
-pub fn characteristic<R: Ring>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
+/// `a = (U2 − 2U1)/12`, `c = U1/2 − a`. In an exact ring every division is
+/// exact because the coefficients lie in the ring; over floats or intervals
+/// it is an ordinary (enclosing) division.
+pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     let at = |lambda: i64| -> R {
         let l = R::from_i64(lambda);
         let m: Mat4<R> =
@@ -120,12 +121,10 @@ pub fn characteristic<R: Ring>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     let t2 = v2.plus(&vm2).minus(&two_v0);
     let u1 = v1.minus(&vm1);
     let u2 = v2.minus(&vm2);
-    let e = t2
-        .minus(&R::from_i64(4).times(&t1))
-        .div_exact(&R::from_i64(24));
-    let bq = t1.div_exact(&two).minus(&e);
-    let aq = u2.minus(&two.times(&u1)).div_exact(&R::from_i64(12));
-    let cq = u1.div_exact(&two).minus(&aq);
+    let e = t2.minus(&R::from_i64(4).times(&t1)).div_small(24);
+    let bq = t1.div_small(2).minus(&e);
+    let aq = u2.minus(&two.times(&u1)).div_small(12);
+    let cq = u1.div_small(2).minus(&aq);
     [e, aq, bq, cq, v0]
 }
 

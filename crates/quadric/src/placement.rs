@@ -4,11 +4,11 @@
 //! entries) and moving ones (entries polynomial in t).
 
 use crate::matrix::{adj3, det3, Mat3, Mat4};
-use ccd_arith::Ring;
+use ccd_arith::RingOps;
 
 /// `M(q)`, the rotation numerator of the contract: `R(q) = M(q)/|q|²` for a
 /// quaternion `q = [w, x, y, z]` (not necessarily unit).
-pub fn rotation_numerator<R: Ring>(q: &[R; 4]) -> Mat3<R> {
+pub fn rotation_numerator<R: RingOps>(q: &[R; 4]) -> Mat3<R> {
     let [w, x, y, z] = q;
     let sq = |a: &R| a.times(a);
     let (ww, xx, yy, zz) = (sq(w), sq(x), sq(y), sq(z));
@@ -38,14 +38,14 @@ pub fn rotation_numerator<R: Ring>(q: &[R; 4]) -> Mat3<R> {
 }
 
 /// `|q|² = w² + x² + y² + z²`.
-pub fn norm2<R: Ring>(q: &[R; 4]) -> R {
+pub fn norm2<R: RingOps>(q: &[R; 4]) -> R {
     q.iter().fold(R::zero(), |acc, c| acc.plus(&c.times(c)))
 }
 
 /// Inverse of the rigid placement `X = R·Xbody + C/w` with `R = M/n`
 /// (`n = |q|² > 0`, `w > 0`): `[[Rᵀ, −Rᵀc], [0, 1]]` times the positive
 /// factor `w·n`, i.e. `[[w·Mᵀ, −Mᵀ·C], [0, w·n]]`.
-pub fn rigid_inverse<R: Ring>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
+pub fn rigid_inverse<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
     let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
     for i in 0..3 {
         let mut t = R::zero();
@@ -63,7 +63,7 @@ pub fn rigid_inverse<R: Ring>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat
 /// Inverse of the affine placement `X = (L·Xbody + d)/w` up to the nonzero
 /// factor `w·det L` (whose square is what the quadric sees): the adjugate of
 /// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
-pub fn affine_inverse<R: Ring>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
+pub fn affine_inverse<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
     let adj = adj3(l);
     let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
     for i in 0..3 {
@@ -81,7 +81,7 @@ pub fn affine_inverse<R: Ring>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
 /// The body quadric `diag(1/r0², 1/r1², 1/r2², −1)` times the positive
 /// factor `(r0·r1·r2)²`: `diag((r1r2)², (r0r2)², (r0r1)², −(r0r1r2)²)`.
 /// Interior points satisfy `Xᵀ D X < 0`.
-pub fn body_diagonal<R: Ring>(radii: &[R; 3]) -> [R; 4] {
+pub fn body_diagonal<R: RingOps>(radii: &[R; 3]) -> [R; 4] {
     let [r0, r1, r2] = radii;
     let sq = |a: &R| a.times(a);
     let all = r0.times(r1).times(r2);

@@ -86,6 +86,7 @@ pub fn determinant<R: Ring>(mut m: Vec<Vec<R>>) -> R {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ccd_arith::RingOps;
     use ccd_arith::{Int, Rat};
     use proptest::prelude::*;
 

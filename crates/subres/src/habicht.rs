@@ -174,6 +174,7 @@ pub fn subresultants_with_derivative<R: Ring>(f: &[R]) -> Vec<Vec<R>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ccd_arith::RingOps;
     use ccd_arith::{Int, Rat};
     use proptest::prelude::*;
 

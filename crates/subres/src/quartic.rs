@@ -7,7 +7,7 @@
 //! [`crate::habicht`]). For two ellipsoids, `f = det(λA + B)` and
 //! `e = det A < 0`; the paper works with the monic `f / e`.
 
-use ccd_arith::Ring;
+use ccd_arith::RingOps;
 
 /// The five quantities of Theorem 3.10 for a quartic, as computed by
 /// [`closed_forms`]: the coefficients `sr22`, `sr20` of
@@ -124,7 +124,7 @@ impl<R> QuarticInvariants<R> {
 /// let s = SignData::from_invariants(&inv, &f, Int::signum);
 /// assert_eq!(classify(&s), Configuration::Separate);
 /// ```
-pub fn closed_forms<R: Ring>(coeffs: &[R; 5]) -> QuarticInvariants<R> {
+pub fn closed_forms<R: RingOps>(coeffs: &[R; 5]) -> QuarticInvariants<R> {
     let [e, a, b, c, d] = coeffs;
     let k = |v: i64| R::from_i64(v);
     let ab = k(12).times(e);
@@ -379,7 +379,7 @@ pub fn classify_with<E>(
 mod tests {
     use super::*;
     use crate::subresultants_with_derivative;
-    use ccd_arith::{Int, Rat};
+    use ccd_arith::{Int, Rat, Ring};
     use proptest::prelude::*;
 
     /// The five quantities in the order of [`QuarticInvariants`].
