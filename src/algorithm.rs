@@ -2,7 +2,6 @@
 //! instant isolated with exact rational bounds and every state decided by
 //! exact signs.
 
-use crate::timeline::{Instant, Outcome, Segment, State, Stats};
 use crate::CcdError;
 use ccd_arith::Rat;
 use ccd_motion::{moving_quadric, CharPoly};
@@ -11,6 +10,7 @@ use ccd_quadric::classify_quartic;
 use ccd_scene::Scene;
 use ccd_solver::RealRoot;
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
+use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
 
 /// What a query asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -35,17 +35,9 @@ impl Options {
     pub const MAX_DIGITS: u32 = 1000;
 }
 
-fn state_of(c: Configuration) -> State {
-    match c {
-        Configuration::Separate => State::Separate,
-        Configuration::ExternalTouch => State::Touch,
-        Configuration::Overlap => State::Overlap,
-    }
-}
-
 /// The configuration at a rational parameter `u`, exactly (Theorem 3.10).
 fn state_at(f: &CharPoly, u: &Rat) -> State {
-    state_of(classify_quartic(&f.at_scaled(u), ccd_arith::Int::signum))
+    State::from(classify_quartic(&f.at_scaled(u), ccd_arith::Int::signum))
 }
 
 /// The sr polynomials of `f(λ; u)` (Section 4 closed forms over ℤ[u]).

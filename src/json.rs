@@ -1,6 +1,6 @@
 //! The `--json` result of the contract (`scene-format.md`, format 1).
 
-use crate::timeline::{Instant, Outcome};
+use ccd_timeline::{Instant, Outcome};
 use serde_json::{json, Value};
 
 /// Decimals of `approx`: 12, plus one per leading zero of the span's width.

@@ -33,13 +33,12 @@
 mod algorithm;
 mod error;
 mod json;
-mod timeline;
 
 pub use algorithm::{symbolic, Options};
 pub use ccd_scene::{Scene, SceneError};
+pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
 pub use error::CcdError;
 pub use json::to_json;
-pub use timeline::{Instant, Outcome, Segment, State, Stats};
 
 /// Runs continuous collision detection on a scene (Algorithm 1).
 pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {

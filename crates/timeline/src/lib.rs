@@ -1,7 +1,12 @@
-//! The certified result: instants with exact rational enclosures, segments
-//! of constant state, and the timeline over the span.
+//! The result of a CCD query: instants with exact rational enclosures
+//! (certified, or marked as not), segments of constant state, and the
+//! timeline over the span. Every solving path (exact, float, interval)
+//! answers in these types.
+
+#![warn(missing_docs)]
 
 use ccd_arith::Rat;
+use ccd_subres::Configuration;
 
 /// The configuration of the two ellipsoids on a segment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -12,6 +17,16 @@ pub enum State {
     Touch,
     /// The interiors share a point.
     Overlap,
+}
+
+impl From<Configuration> for State {
+    fn from(c: Configuration) -> State {
+        match c {
+            Configuration::Separate => State::Separate,
+            Configuration::ExternalTouch => State::Touch,
+            Configuration::Overlap => State::Overlap,
+        }
+    }
 }
 
 impl State {
