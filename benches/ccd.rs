@@ -12,7 +12,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn scene(name: &str) -> Scene {
-    let path = format!("{}/tests/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     Scene::from_toml(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
@@ -40,13 +40,20 @@ fn static_classification(c: &mut Criterion) {
 fn ccd(c: &mut Criterion) {
     let mut g = c.benchmark_group("ccd exact");
     g.sample_size(30).measurement_time(Duration::from_secs(3));
-    for name in ["paper-example-5-1.toml", "rigid-tumbling.toml"] {
+    for name in [
+        "tests/scenes/paper-example-5-1.toml",
+        "tests/scenes/rigid-tumbling.toml",
+        "benches/scenes/rigid-deg2.toml",
+        "benches/scenes/affine-deg2.toml",
+        "benches/scenes/affine-rational-deg2.toml",
+    ] {
         let s = scene(name);
         let full = Options::default();
         let first = Options {
             first_contact_only: true,
             ..Options::default()
         };
+        let name = name.rsplit('/').next().unwrap_or(name);
         g.bench_function(format!("{name} total"), |bench| {
             bench.iter(|| run(black_box(&s), &full).expect("runs"))
         });

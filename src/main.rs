@@ -1,6 +1,7 @@
 //! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
 
 use ccd_exact::{run_toml, to_json, Options, Outcome};
+use std::io::Write;
 use std::process::ExitCode;
 
 const HELP: &str = "\
@@ -75,43 +76,35 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
     }))
 }
 
-fn print_table(out: &Outcome) {
+fn table(out: &Outcome) -> String {
+    use std::fmt::Write as _;
     let s = &out.stats;
-    println!(
-        "span [{}, {}]; deg_t f = {}, deg sr0 = {}, branch: {}",
-        out.span[0],
-        out.span[1],
-        s.deg_f,
-        s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string()),
-        s.branch
-    );
-    println!();
-    println!("  {:<9} {:>20}  {:>20}", "state", "from", "to");
+    let mut t = String::new();
+    let sr0 = s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string());
+    let _ = writeln!(t, "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n", out.span[0], out.span[1], s.deg_f, s.branch);
+    let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", "state", "from", "to");
     for seg in &out.timeline {
-        println!(
-            "  {:<9} {:>20}  {:>20}",
-            seg.state.name(),
-            seg.start.approx(12),
-            seg.end.approx(12)
-        );
+        let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", seg.state.name(), seg.start.approx(12), seg.end.approx(12));
     }
-    println!();
+    t.push('\n');
     if out.contacts.is_empty() {
-        println!("contacts: none");
+        t.push_str("contacts: none\n");
     }
     for (k, c) in out.contacts.iter().enumerate() {
-        println!("contact {} ≈ {}", k + 1, c.approx(15));
-        println!("    lo = {}", c.lo);
-        println!("    hi = {}", c.hi);
+        let mark = if c.certified { "" } else { "  (NOT certified)" };
+        let _ = writeln!(t, "contact {} ≈ {}{mark}\n    lo = {}\n    hi = {}", k + 1, c.approx(15), c.lo, c.hi);
     }
     match &out.first_contact {
-        Some(fc) => println!("first contact ≈ {}", fc.approx(15)),
-        None if out.collision_free => println!("collision-free over the span"),
+        Some(fc) => {
+            let _ = writeln!(t, "first contact ≈ {}", fc.approx(15));
+        }
+        None if out.collision_free => t.push_str("collision-free over the span\n"),
         None => {}
     }
     if !out.complete {
-        println!("(first contact only: the timeline stops there)");
+        t.push_str("(first contact only: the timeline stops there)\n");
     }
+    t
 }
 
 fn main() -> ExitCode {
@@ -135,15 +128,15 @@ fn main() -> ExitCode {
     };
     match run_toml(&text, &args.options) {
         Ok(out) => {
-            if args.json {
-                println!(
-                    "{}",
-                    serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default()
-                );
-            } else {
-                print_table(&out);
+            let text = if args.json { serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default() + "\n" } else { table(&out) };
+            // A reader that stops early (`| head`) is not an error of ours.
+            match std::io::stdout().lock().write_all(text.as_bytes()) {
+                Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                    eprintln!("ccd-exact: cannot write the result: {e}");
+                    ExitCode::from(1)
+                }
+                _ => ExitCode::SUCCESS,
             }
-            ExitCode::SUCCESS
         }
         Err(e) => {
             eprintln!("ccd-exact: {}: {e}", args.path);

@@ -123,3 +123,18 @@ fn help_lists_examples() {
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stdout).contains("EXAMPLES"));
 }
+
+#[test]
+fn a_closed_pipe_is_not_a_panic() {
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ccd-exact"))
+        .arg(scene("paper-example-5-1.toml"))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
+    assert_eq!(out.status.code(), Some(0));
+}
