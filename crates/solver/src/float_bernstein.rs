@@ -7,7 +7,8 @@
 //! integers for that node. The intervals are enclosures of the exact scaled
 //! coefficients, so every sign this module reports is proven.
 
-use ccd_arith::{Int, Interval};
+use ccd_arith::{Int, Interval, Rat};
+use ccd_poly::ZPoly;
 
 /// Largest bit length kept in front of the binary point after scaling.
 const TARGET_BITS: i64 = 900;
@@ -36,6 +37,53 @@ impl FloatBernstein {
             })
             .collect();
         FloatBernstein { coeffs }
+    }
+
+    /// Encloses the Bernstein coefficients of `p` over `[lo, hi]` (times a
+    /// positive power of two) straight from the power basis, in interval
+    /// arithmetic: `q(u) = p(lo + (hi − lo)·u)` by a Taylor shift and scaling,
+    /// then `b_i = Σ_j C(i, j)/C(n, j)·q_j` as `q_j/C(n, j)` accumulated
+    /// through Pascal's triangle (additions only). `None` when a coefficient's
+    /// sign is left undecided (cancellation): the caller converts exactly.
+    pub(crate) fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<FloatBernstein> {
+        let n = p.degree()?;
+        let max_bits = p.max_bits() as i64;
+        let shift = (max_bits - TARGET_BITS).max(0);
+        let mut a: Vec<Interval> = p
+            .coeffs()
+            .iter()
+            .map(|c| Interval::from_int_scaled(c, shift))
+            .collect();
+        if !lo.is_zero() {
+            let l = Interval::from_rat(lo);
+            for i in 0..n {
+                for j in (i..n).rev() {
+                    a[j] = a[j] + l * a[j + 1];
+                }
+            }
+        }
+        let w = hi - lo;
+        if w != Rat::one() {
+            let wi = Interval::from_rat(&w);
+            let mut pw = Interval::point(1.0);
+            for c in a.iter_mut().skip(1) {
+                pw = pw * wi;
+                *c = *c * pw;
+            }
+        }
+        // q_j / C(n, j), then b_i = Σ_j C(i, j)·(q_j / C(n, j)).
+        let mut binom = Int::one();
+        for (j, c) in a.iter_mut().enumerate() {
+            *c = c.div_positive(Interval::from_int(&binom));
+            binom = (&binom * &Int::from((n - j) as i64)).div_exact(&Int::from((j + 1) as i64));
+        }
+        for k in 1..=n {
+            for i in (k..=n).rev() {
+                a[i] = a[i] + a[i - 1];
+            }
+        }
+        let fb = FloatBernstein { coeffs: a };
+        fb.signs().map(|_| fb)
     }
 
     /// The certified sign of every coefficient, or `None` if one is undecided.
@@ -68,6 +116,7 @@ impl FloatBernstein {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ccd_poly::Bernstein;
 
     #[test]
     fn split_encloses_exact_halves() {
@@ -79,6 +128,25 @@ mod tests {
         // Exact halves: left [4, -1/2, -1/4]·..., check signs only.
         assert_eq!(l.signs(), Some(vec![1, -1, -1]));
         assert_eq!(r.signs(), Some(vec![-1, -1, 1]));
+    }
+
+    #[test]
+    fn interval_conversion_agrees_with_exact_signs() {
+        // (3u − 1)(2u − 1)(u² + 1)·(5u + 7) on several intervals.
+        let p = ZPoly::from_i64s(&[-1, 3])
+            * ZPoly::from_i64s(&[-1, 2])
+            * ZPoly::from_i64s(&[1, 0, 1])
+            * ZPoly::from_i64s(&[7, 5]);
+        for (lo, hi) in [
+            (Rat::zero(), Rat::one()),
+            (Rat::from_frac(-3, 2), Rat::from_frac(1, 5)),
+            (Rat::from_frac(1, 7), Rat::from(4)),
+        ] {
+            let exact = Bernstein::from_power(&p, &lo, &hi);
+            let float = FloatBernstein::from_power(&p, &lo, &hi).expect("well conditioned");
+            let signs: Vec<i32> = exact.coeffs().iter().map(|c| c.signum()).collect();
+            assert_eq!(float.signs(), Some(signs));
+        }
     }
 
     #[test]

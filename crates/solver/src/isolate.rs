@@ -147,19 +147,25 @@ pub struct RootIter {
 impl RootIter {
     /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
     pub(crate) fn new(poly: Arc<ZPoly>, lo: &Rat, hi: &Rat) -> RootIter {
-        let root = Node::exact(&poly, lo.clone(), hi.clone());
-        let (first, last) = match &root.coeffs {
-            Coeffs::Exact(b) => (b.sign_at_lo(), b.sign_at_hi()),
-            Coeffs::Float(_) => unreachable!("Node::exact builds exact coefficients"),
-        };
+        let (first, last) = (poly.sign_at(lo), poly.sign_at(hi));
         let mut stack = Vec::new();
         if last == 0 {
             stack.push(Item::Root(RealRoot::exact(poly.clone(), hi.clone())));
         }
-        let Coeffs::Exact(b) = root.coeffs else {
-            unreachable!("exact root node")
+        // The filter straight from the power basis when the ends are not
+        // roots; the exact conversion otherwise (or if it cannot sign).
+        let float = (first != 0 && last != 0)
+            .then(|| FloatBernstein::from_power(&poly, lo, hi))
+            .flatten();
+        let root = match float {
+            Some(f) => Node {
+                lo: lo.clone(),
+                hi: hi.clone(),
+                coeffs: Coeffs::Float(f),
+            },
+            None => Node::from_exact_bernstein(Bernstein::from_power(&poly, lo, hi)),
         };
-        stack.push(Item::Node(Node::from_exact_bernstein(b)));
+        stack.push(Item::Node(root));
         if first == 0 {
             stack.push(Item::Root(RealRoot::exact(poly.clone(), lo.clone())));
         }

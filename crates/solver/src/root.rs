@@ -75,7 +75,7 @@ impl RealRoot {
     /// Moves one end to `x` (strictly inside) according to the exact sign of
     /// `p(x)`; a zero makes the root exact.
     fn cut(&mut self, x: Rat) {
-        let s = self.poly.sign_at(&x);
+        let s = self.sign_of_p_at(&x);
         if s == 0 {
             self.lo = x.clone();
             self.hi = x;
@@ -87,7 +87,16 @@ impl RealRoot {
         }
     }
 
-    /// Halves the enclosure (one exact evaluation).
+    /// The sign of `p(x)`: the interval enclosure when it excludes zero,
+    /// exact evaluation otherwise.
+    fn sign_of_p_at(&self, x: &Rat) -> i32 {
+        match self.scaled().enclose(Interval::from_rat(x)).sign() {
+            Some(s) if s != 0 => s,
+            _ => self.poly.sign_at(x),
+        }
+    }
+
+    /// Halves the enclosure (one sign evaluation).
     pub fn bisect(&mut self) {
         if self.sign_lo != 0 {
             self.cut(self.midpoint());
