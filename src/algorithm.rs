@@ -4,7 +4,7 @@
 
 use crate::CcdError;
 use ccd_arith::Rat;
-use ccd_motion::{moving_quadric, CharPoly};
+use ccd_motion::{placed_quadric, CharPoly};
 use ccd_poly::ZPoly;
 use ccd_quadric::classify_quartic;
 use ccd_scene::Scene;
@@ -94,9 +94,9 @@ struct Contact {
 /// The symbolic stage of a rational scene: the normalised `f(λ; u)` and its
 /// five `sr` polynomials in `u = (t − t0)/(t1 − t0)`.
 pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), CcdError> {
-    let ma = moving_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
-    let mb = moving_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
-    let f = CharPoly::new(&ma, &mb);
+    let ma = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
+    let mb = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+    let f = CharPoly::from_placed(&ma, &mb);
     let inv = invariants(&f);
     Ok((f, inv))
 }

@@ -81,10 +81,20 @@ fn table(out: &Outcome) -> String {
     let s = &out.stats;
     let mut t = String::new();
     let sr0 = s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string());
-    let _ = writeln!(t, "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n", out.span[0], out.span[1], s.deg_f, s.branch);
+    let _ = writeln!(
+        t,
+        "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n",
+        out.span[0], out.span[1], s.deg_f, s.branch
+    );
     let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", "state", "from", "to");
     for seg in &out.timeline {
-        let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", seg.state.name(), seg.start.approx(12), seg.end.approx(12));
+        let _ = writeln!(
+            t,
+            "  {:<9} {:>20}  {:>20}",
+            seg.state.name(),
+            seg.start.approx(12),
+            seg.end.approx(12)
+        );
     }
     t.push('\n');
     if out.contacts.is_empty() {
@@ -92,7 +102,14 @@ fn table(out: &Outcome) -> String {
     }
     for (k, c) in out.contacts.iter().enumerate() {
         let mark = if c.certified { "" } else { "  (NOT certified)" };
-        let _ = writeln!(t, "contact {} ≈ {}{mark}\n    lo = {}\n    hi = {}", k + 1, c.approx(15), c.lo, c.hi);
+        let _ = writeln!(
+            t,
+            "contact {} ≈ {}{mark}\n    lo = {}\n    hi = {}",
+            k + 1,
+            c.approx(15),
+            c.lo,
+            c.hi
+        );
     }
     match &out.first_contact {
         Some(fc) => {
@@ -128,7 +145,11 @@ fn main() -> ExitCode {
     };
     match run_toml(&text, &args.options) {
         Ok(out) => {
-            let text = if args.json { serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default() + "\n" } else { table(&out) };
+            let text = if args.json {
+                serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default() + "\n"
+            } else {
+                table(&out)
+            };
             // A reader that stops early (`| head`) is not an error of ours.
             match std::io::stdout().lock().write_all(text.as_bytes()) {
                 Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {

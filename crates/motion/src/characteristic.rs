@@ -24,7 +24,7 @@
 
 use crate::error::MotionError;
 use crate::kinds::Body;
-use crate::matrices::moving_quadric;
+use crate::matrices::{moving_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, Mat4};
@@ -38,10 +38,25 @@ pub struct CharPoly {
 }
 
 impl CharPoly {
-    /// `det(λA + B)` of two moving quadrics, normalised (module docs).
+    /// `det(λA + B)` of two moving quadrics, normalised (module docs); the
+    /// factors of `det A` and `det B` are found by squarefree factorisation.
     pub fn new(a: &Mat4<ZPoly>, b: &Mat4<ZPoly>) -> CharPoly {
         CharPoly {
             coeffs: normalise(characteristic(a, b)),
+        }
+    }
+
+    /// `det(λA + B)` normalised with the determinant factors the motions
+    /// already know (no factorisation of `det A`, `det B` needed).
+    pub fn from_placed(a: &PlacedQuadric, b: &PlacedQuadric) -> CharPoly {
+        let candidates = a
+            .det_factors
+            .iter()
+            .chain(&b.det_factors)
+            .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
+            .collect();
+        CharPoly {
+            coeffs: normalise_with(characteristic(&a.matrix, &b.matrix), candidates),
         }
     }
 
@@ -181,14 +196,23 @@ fn best_exponents(v: &[Option<usize>; 5], degs: &[usize; 5], deg_pi: usize) -> [
     best.map_or([0; 5], |(_, e)| e)
 }
 
-/// The normalisation of the module docs, on `[c_4, …, c_0]`.
+/// The normalisation of the module docs, on `[c_4, …, c_0]`, with the
+/// candidate factors taken from a squarefree factorisation of `c_4 = det A`
+/// and `c_0 = det B`.
 pub fn normalise(f: [ZPoly; 5]) -> [ZPoly; 5] {
-    // Low → high for indexing by the power of λ.
-    let mut c: [ZPoly; 5] = std::array::from_fn(|k| f[4 - k].clone());
-    let candidates: Vec<ZPoly> = [&c[4], &c[0]]
+    let candidates: Vec<ZPoly> = [&f[0], &f[4]]
         .iter()
         .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
         .collect();
+    normalise_with(f, candidates)
+}
+
+/// The normalisation with given candidate factors: every factor of
+/// `det A · det B` must divide a product of them (they are refined into a
+/// coprime basis here).
+pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
+    // Low → high for indexing by the power of λ.
+    let mut c: [ZPoly; 5] = std::array::from_fn(|k| f[4 - k].clone());
     for pi in coprime_basis(candidates) {
         // Positive on the span (it divides det A or det B, which do not vanish there).
         let pi = if pi.sign_at(&Rat::from_frac(1, 2)) < 0 {
@@ -227,6 +251,55 @@ pub fn normalise(f: [ZPoly; 5]) -> [ZPoly; 5] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn known_factors_give_the_same_normalisation() {
+        use crate::kinds::{Bezier, Motion};
+        let r = |s: &str| -> Rat { s.parse().unwrap() };
+        let v = |a: &str, b: &str, c: &str| [r(a), r(b), r(c)];
+        let q = |a: &str, b: &str, c: &str, d: &str| [r(a), r(b), r(c), r(d)];
+        let rigid = Body {
+            radii: v("3", "1", "1/2"),
+            motion: Motion::Rigid {
+                orientation: Bezier {
+                    points: vec![q("1", "0", "0", "0"), q("1", "0", "1", "1")],
+                    weights: None,
+                },
+                center: Bezier {
+                    points: vec![v("0", "0", "0"), v("1", "2", "0")],
+                    weights: Some(vec![r("1"), r("2")]),
+                },
+            },
+        };
+        let affine = Body {
+            radii: v("2", "1", "1"),
+            motion: Motion::Affine {
+                matrix: Bezier {
+                    points: vec![
+                        [
+                            q("1", "0", "0", "4"),
+                            q("0", "1", "0", "0"),
+                            q("0", "0", "1", "0"),
+                        ],
+                        [
+                            q("2", "1/2", "0", "0"),
+                            q("0", "3/5", "3/10", "1"),
+                            q("0", "0", "3/2", "1/2"),
+                        ],
+                    ],
+                    weights: Some(vec![r("1"), r("3")]),
+                },
+            },
+        };
+        let span = [Rat::zero(), Rat::one()];
+        let (pa, pb) = (
+            crate::matrices::placed_quadric(&rigid, &span).unwrap(),
+            crate::matrices::placed_quadric(&affine, &span).unwrap(),
+        );
+        let fast = CharPoly::from_placed(&pa, &pb);
+        let slow = CharPoly::new(&pa.matrix, &pb.matrix);
+        assert_eq!(fast, slow);
+    }
 
     #[test]
     fn yun_splits_multiplicities() {

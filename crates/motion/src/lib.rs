@@ -11,7 +11,7 @@ mod error;
 pub mod kinds;
 pub mod matrices;
 
-pub use characteristic::{char_poly, normalise, CharPoly};
+pub use characteristic::{char_poly, normalise, normalise_with, CharPoly};
 pub use error::MotionError;
 pub use kinds::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
-pub use matrices::{moving_quadric, placement_degree};
+pub use matrices::{moving_quadric, placed_quadric, placement_degree, PlacedQuadric};

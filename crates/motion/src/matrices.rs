@@ -27,8 +27,13 @@ fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
 }
 
 /// The inverse placement `N(u)` over ℚ[u] (up to a positive factor, or a
-/// nonzero one for affine motions, whose square is what counts).
-fn inverse_placement(motion: &Motion, span: &[Rat; 2]) -> Result<Mat4<QPoly>, MotionError> {
+/// nonzero one for affine motions, whose square is what counts), and the
+/// polynomials whose powers make up `det N` (the weight curve, and `|q|²`
+/// or `det L`): the only factors `det A` can have.
+fn inverse_placement(
+    motion: &Motion,
+    span: &[Rat; 2],
+) -> Result<(Mat4<QPoly>, Vec<QPoly>), MotionError> {
     let rigid = |q: &[QPoly; 4], center: &[QPoly; 3], w: &QPoly| {
         rigid_inverse(&rotation_numerator(q), &norm2(q), center, w)
     };
@@ -40,10 +45,13 @@ fn inverse_placement(motion: &Motion, span: &[Rat; 2]) -> Result<Mat4<QPoly>, Mo
         Motion::Static {
             center,
             orientation,
-        } => Ok(rigid(
-            &constant_vec(orientation),
-            &constant_vec(center),
-            &QPoly::one(),
+        } => Ok((
+            rigid(
+                &constant_vec(orientation),
+                &constant_vec(center),
+                &QPoly::one(),
+            ),
+            vec![],
         )),
         Motion::Translation {
             center,
@@ -51,11 +59,8 @@ fn inverse_placement(motion: &Motion, span: &[Rat; 2]) -> Result<Mat4<QPoly>, Mo
         } => {
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
-            Ok(rigid(
-                &constant_vec(orientation),
-                &c.numerators,
-                &c.denominator,
-            ))
+            let m = rigid(&constant_vec(orientation), &c.numerators, &c.denominator);
+            Ok((m, vec![c.denominator]))
         }
         Motion::Rigid {
             orientation,
@@ -70,7 +75,10 @@ fn inverse_placement(motion: &Motion, span: &[Rat; 2]) -> Result<Mat4<QPoly>, Mo
             }
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
-            Ok(rigid(&q, &c.numerators, &c.denominator))
+            Ok((
+                rigid(&q, &c.numerators, &c.denominator),
+                vec![c.denominator, norm2(&q)],
+            ))
         }
         Motion::Affine { matrix } => {
             let entry = |r: usize, k: usize| -> Bezier<[Rat; 1]> {
@@ -90,10 +98,11 @@ fn inverse_placement(motion: &Motion, span: &[Rat; 2]) -> Result<Mat4<QPoly>, Mo
                 None => QPoly::one(),
             };
             check_weight(&w)?;
-            if let Some(at) = first_root_in_span(det3(&l).prim(), span) {
+            let det_l = det3(&l);
+            if let Some(at) = first_root_in_span(det_l.prim(), span) {
                 return Err(MotionError::SingularAffine { at });
             }
-            Ok(affine_inverse(&l, &d, &w))
+            Ok((affine_inverse(&l, &d, &w), vec![w, det_l]))
         }
         Motion::Helical { .. } => Err(MotionError::NotRational { kind: "helical" }),
     }
@@ -138,20 +147,47 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
     std::array::from_fn(|i| (&Rat::from_int(den.clone()) * &v[i]).floor())
 }
 
+/// A moving quadric and what is known about its determinant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlacedQuadric {
+    /// `A(u)` with integer polynomial entries (interior `XᵀA(u)X < 0`), up to
+    /// a factor positive on the span.
+    pub matrix: Mat4<ZPoly>,
+    /// Primitive polynomials nonzero on the span such that `det A(u)` is a
+    /// constant times a product of their powers.
+    pub det_factors: Vec<ZPoly>,
+}
+
+/// The moving quadric of a body, with the factors of its determinant.
+/// Fails if the motion degenerates somewhere on the span (decided exactly
+/// with the solver) or is not rational.
+pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, MotionError> {
+    let (inverse, factors) = inverse_placement(&body.motion, span)?;
+    let n = to_integer_matrix(&inverse);
+    let d = rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant);
+    let det_factors = factors
+        .iter()
+        .map(|f| f.prim().clone())
+        .filter(|f| f.degree().unwrap_or(0) > 0)
+        .collect();
+    Ok(PlacedQuadric {
+        matrix: congruence(&n, &d),
+        det_factors,
+    })
+}
+
 /// The moving quadric `A(u)` of a body (interior `XᵀA(u)X < 0`), with
 /// integer polynomial entries in `u = (t − t0)/(t1 − t0)`, up to a factor
 /// positive on the span. Fails if the motion degenerates somewhere on the
 /// span (decided exactly with the solver) or is not rational.
 pub fn moving_quadric(body: &Body, span: &[Rat; 2]) -> Result<Mat4<ZPoly>, MotionError> {
-    let n = to_integer_matrix(&inverse_placement(&body.motion, span)?);
-    let d = rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant);
-    Ok(congruence(&n, &d))
+    Ok(placed_quadric(body, span)?.matrix)
 }
 
 /// The degree in `u` of a body's placement (for choosing frames and for
 /// reports): the largest degree of its inverse placement's entries.
 pub fn placement_degree(body: &Body, span: &[Rat; 2]) -> Result<usize, MotionError> {
-    let n = to_integer_matrix(&inverse_placement(&body.motion, span)?);
+    let n = to_integer_matrix(&inverse_placement(&body.motion, span)?.0);
     Ok(n.iter()
         .flatten()
         .filter_map(ZPoly::degree)

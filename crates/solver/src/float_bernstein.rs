@@ -40,49 +40,35 @@ impl FloatBernstein {
     }
 
     /// Encloses the Bernstein coefficients of `p` over `[lo, hi]` (times a
-    /// positive power of two) straight from the power basis, in interval
-    /// arithmetic: `q(u) = p(lo + (hi − lo)·u)` by a Taylor shift and scaling,
-    /// then `b_i = Σ_j C(i, j)/C(n, j)·q_j` as `q_j/C(n, j)` accumulated
-    /// through Pascal's triangle (additions only). `None` when a coefficient's
-    /// sign is left undecided (cancellation): the caller converts exactly.
+    /// positive factor) without a single gcd: with `q(u) = p(lo + (hi − lo)·u)`
+    /// (exact, up to a positive factor), the integers
+    /// `c_i = C(n, i)·b_i` are the coefficients of `(1 + s)^n q(s/(1 + s))`,
+    /// i.e. `reverse(shift₁(reverse(q)))` — additions only — and each `b_i` is
+    /// then enclosed as `c_i / C(n, i)` with one rounding (no cancellation).
+    /// The signs of the `c_i` are exact. Requires `p(lo) ≠ 0` and `p(hi) ≠ 0`
+    /// (so the reversals keep the degree); `None` if a sign is undecided.
     pub(crate) fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<FloatBernstein> {
         let n = p.degree()?;
-        let max_bits = p.max_bits() as i64;
+        let q = if lo.is_zero() && *hi == Rat::one() {
+            p.clone()
+        } else {
+            p.compose_affine(lo, &(hi - lo))
+        };
+        let c = q.reverse().taylor_shift(&Int::one()).reverse();
+        if c.degree() != Some(n) || c.coeff(0).is_zero() {
+            return None;
+        }
+        let max_bits = c.max_bits() as i64;
         let shift = (max_bits - TARGET_BITS).max(0);
-        let mut a: Vec<Interval> = p
-            .coeffs()
-            .iter()
-            .map(|c| Interval::from_int_scaled(c, shift))
-            .collect();
-        if !lo.is_zero() {
-            let l = Interval::from_rat(lo);
-            for i in 0..n {
-                for j in (i..n).rev() {
-                    a[j] = a[j] + l * a[j + 1];
-                }
-            }
-        }
-        let w = hi - lo;
-        if w != Rat::one() {
-            let wi = Interval::from_rat(&w);
-            let mut pw = Interval::point(1.0);
-            for c in a.iter_mut().skip(1) {
-                pw = pw * wi;
-                *c = *c * pw;
-            }
-        }
-        // q_j / C(n, j), then b_i = Σ_j C(i, j)·(q_j / C(n, j)).
         let mut binom = Int::one();
-        for (j, c) in a.iter_mut().enumerate() {
-            *c = c.div_positive(Interval::from_int(&binom));
-            binom = (&binom * &Int::from((n - j) as i64)).div_exact(&Int::from((j + 1) as i64));
+        let mut coeffs = Vec::with_capacity(n + 1);
+        for (i, ci) in c.coeffs().iter().enumerate() {
+            coeffs.push(
+                Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&binom)),
+            );
+            binom = (&binom * &Int::from((n - i) as i64)).div_exact(&Int::from((i + 1) as i64));
         }
-        for k in 1..=n {
-            for i in (k..=n).rev() {
-                a[i] = a[i] + a[i - 1];
-            }
-        }
-        let fb = FloatBernstein { coeffs: a };
+        let fb = FloatBernstein { coeffs };
         fb.signs().map(|_| fb)
     }
 
