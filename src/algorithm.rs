@@ -3,14 +3,14 @@
 //! exact signs.
 
 use crate::CcdError;
-use ccd_arith::Rat;
-use ccd_motion::{placed_quadric, CharPoly};
+use ccd_arith::{Int, Rat};
+use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
-use ccd_quadric::classify_quartic;
+use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
 use ccd_solver::RealRoot;
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
-use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
+use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
 /// What a query asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -37,7 +37,7 @@ impl Options {
 
 /// The configuration at a rational parameter `u`, exactly (Theorem 3.10).
 fn state_at(f: &CharPoly, u: &Rat) -> State {
-    State::from(classify_quartic(&f.at_scaled(u), ccd_arith::Int::signum))
+    State::from(classify_quartic(&f.at_scaled(u), Int::signum))
 }
 
 /// The sr polynomials of `f(λ; u)` (Section 4 closed forms over ℤ[u]).
@@ -63,17 +63,6 @@ fn touches_at(root: &mut RealRoot, inv: &QuarticInvariants<ZPoly>, zero: &[Quant
     matches!(answer, Ok(Configuration::ExternalTouch))
 }
 
-/// A simple rational strictly inside `(lo, hi)`, or `lo`/`hi` themselves
-/// where they may be taken (`*_incl`): the sample for a piece of the span.
-fn sample_between(lo: &Rat, lo_incl: bool, hi: &Rat, hi_incl: bool) -> Rat {
-    let s = Rat::simplest_in(lo, hi);
-    if (s != *lo || lo_incl) && (s != *hi || hi_incl) && lo != hi {
-        return s;
-    }
-    let quarter = (hi - lo).mul_pow2(-2);
-    Rat::simplest_in(&(lo + &quarter), &(hi - &quarter))
-}
-
 /// The first of 1/2, 1/4, 3/4, 1/8, 3/8, … that is not a root of `p ≠ 0`.
 fn non_root_dyadic(p: &ZPoly) -> Rat {
     (1u64..)
@@ -86,178 +75,119 @@ fn non_root_dyadic(p: &ZPoly) -> Rat {
         .expect("a nonzero polynomial has finitely many roots")
 }
 
-/// A candidate contact: the instant and whether it is a touch.
-struct Contact {
-    root: RealRoot,
+fn placed(scene: &Scene) -> Result<(PlacedQuadric, PlacedQuadric), CcdError> {
+    let a = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
+    let b = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+    Ok((a, b))
 }
 
 /// The symbolic stage of a rational scene: the normalised `f(λ; u)` and its
 /// five `sr` polynomials in `u = (t − t0)/(t1 − t0)`.
 pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), CcdError> {
-    let ma = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
-    let mb = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
-    let f = CharPoly::from_placed(&ma, &mb);
+    let (a, b) = placed(scene)?;
+    let f = CharPoly::from_placed(&a, &b);
     let inv = invariants(&f);
     Ok((f, inv))
 }
 
-/// Runs Algorithm 1 on a rational scene.
-pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
-    let span = scene.span.clone();
-    let (f, inv) = symbolic(scene)?;
-    let mut stats = Stats {
-        deg_f: f.degree(),
-        deg_sr0: inv.sr0.degree(),
-        ..Stats::default()
+/// The state at `u = 0` straight from the placed matrices (no `f(λ; u)`).
+fn state_at_start(a: &PlacedQuadric, b: &PlacedQuadric) -> State {
+    let at0 = |m: &PlacedQuadric| {
+        m.matrix
+            .each_ref()
+            .map(|row| row.each_ref().map(|e| e.coeff(0)))
     };
-    let (zero, one) = (Rat::zero(), Rat::one());
-    let state0 = state_at(&f, &zero);
+    State::from(classify_quartic(
+        &characteristic(&at0(a), &at0(b)),
+        Int::signum,
+    ))
+}
 
-    let mut contacts: Vec<Contact> = Vec::new();
-    let mut throughout: Option<State> = None;
-    let first_only = opts.first_contact_only;
-    let stop_early = first_only && state0 != State::Separate;
+/// Where the contact candidates come from (Algorithm 1's three branches).
+enum Candidates<'a> {
+    /// Roots of this polynomial, at which these quantities vanish.
+    Roots(&'a ZPoly, &'static [Quantity]),
+    /// One state on the whole span.
+    Throughout(State),
+}
 
-    let candidates: Option<(&ZPoly, Vec<Quantity>)> = if !inv.sr0.is_zero() {
+fn candidates<'a>(
+    f: &CharPoly,
+    inv: &'a QuarticInvariants<ZPoly>,
+    state0: State,
+    stats: &mut Stats,
+) -> Candidates<'a> {
+    if !inv.sr0.is_zero() {
         stats.branch = "sr0";
-        Some((&inv.sr0, vec![Quantity::Sr0]))
+        Candidates::Roots(&inv.sr0, &[Quantity::Sr0])
     } else if !inv.sr11.is_zero() {
         // Theorem 5.5: touching at one non-root of sr11 means throughout.
         stats.branch = "sr0=0, sr11";
-        let delta = non_root_dyadic(&inv.sr11);
-        if state_at(&f, &delta) == State::Touch {
-            throughout = Some(State::Touch);
-            None
+        if state_at(f, &non_root_dyadic(&inv.sr11)) == State::Touch {
+            Candidates::Throughout(State::Touch)
         } else {
-            Some((&inv.sr11, vec![Quantity::Sr0, Quantity::Sr11]))
+            Candidates::Roots(&inv.sr11, &[Quantity::Sr0, Quantity::Sr11])
         }
     } else {
         // Theorem 5.6: the state at t0 holds throughout.
         stats.branch = "sr0=0, sr11=0";
-        throughout = Some(state0);
-        None
-    };
+        Candidates::Throughout(state0)
+    }
+}
 
-    if let (Some((poly, zeros)), false) = (candidates, stop_early) {
-        stats.deg_candidates = poly.degree();
-        let roots = ccd_solver::isolate(poly, &zero, &one)
-            .map_err(|e| CcdError::Internal(e.to_string()))?;
-        for mut root in roots {
-            stats.candidates += 1;
-            if touches_at(&mut root, &inv, &zeros) {
-                contacts.push(Contact { root });
-                if first_only {
-                    break;
+/// Runs Algorithm 1 on a rational scene.
+pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
+    let (a, b) = placed(scene)?;
+    let state0 = state_at_start(&a, &b);
+    let mut stats = Stats::default();
+    if opts.first_contact_only && state0 != State::Separate {
+        // Early exit: not separate at t0, nothing else to compute.
+        let found = Findings {
+            state0,
+            throughout: None,
+            contacts: vec![],
+            complete: false,
+        };
+        return found.into_outcome(&scene.span, stats, |_| Ok(state0));
+    }
+    let f = CharPoly::from_placed(&a, &b);
+    let inv = invariants(&f);
+    stats.deg_f = f.degree();
+    stats.deg_sr0 = inv.sr0.degree();
+    let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");
+    let mut found = Findings {
+        state0,
+        throughout: None,
+        contacts: vec![],
+        complete: true,
+    };
+    match candidates(&f, &inv, state0, &mut stats) {
+        Candidates::Throughout(state) => found.throughout = Some(state),
+        Candidates::Roots(poly, zeros) => {
+            stats.deg_candidates = poly.degree();
+            let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
+                .map_err(|e| CcdError::Internal(e.to_string()))?;
+            for mut root in roots {
+                stats.candidates += 1;
+                if touches_at(&mut root, &inv, zeros) {
+                    root.refine_to(&width);
+                    found.contacts.push(Instant {
+                        lo: root.lo().clone(),
+                        hi: root.hi().clone(),
+                        certified: true,
+                    });
+                    if opts.first_contact_only {
+                        found.complete = false;
+                        break;
+                    }
                 }
             }
         }
     }
-
-    // Enclosures to the requested width, then mapped from u to t.
-    let width = Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(opts.digits))
-        .expect("nonzero denominator");
-    let dt = &span[1] - &span[0];
-    let to_t = |u: &Rat| &span[0] + &(u * &dt);
-    let instant_u = |r: &RealRoot| Instant {
-        lo: r.lo().clone(),
-        hi: r.hi().clone(),
-        certified: true,
-    };
-    let map = |i: &Instant| Instant {
-        lo: to_t(&i.lo),
-        hi: to_t(&i.hi),
-        certified: i.certified,
-    };
-    let mut contact_u: Vec<Instant> = Vec::with_capacity(contacts.len());
-    for c in contacts.iter_mut() {
-        c.root.refine_to(&width);
-        contact_u.push(instant_u(&c.root));
-    }
-
-    let start = Instant::exact(zero.clone());
-    let end = Instant::exact(one.clone());
-    let mut timeline: Vec<Segment> = Vec::new();
-    let complete;
-    if let Some(state) = throughout {
-        timeline.push(Segment {
-            state,
-            start: start.clone(),
-            end: end.clone(),
-        });
-        complete = true;
-    } else if stop_early {
-        timeline.push(Segment {
-            state: state0,
-            start: start.clone(),
-            end: start.clone(),
-        });
-        complete = false;
-    } else {
-        // Breakpoints: t0, the contacts, t1 (contacts at the ends coincide).
-        let mut points: Vec<Instant> = Vec::new();
-        if contact_u
-            .first()
-            .is_none_or(|c| c.lo != zero || c.hi != zero)
-        {
-            points.push(start.clone());
-        }
-        points.extend(contact_u.iter().cloned());
-        let ends_at_one = contact_u.last().is_some_and(|c| c.lo == one && c.hi == one);
-        let reached_end = !first_only || contact_u.is_empty();
-        if !ends_at_one && reached_end {
-            points.push(end.clone());
-        }
-        let is_contact = |i: &Instant| contact_u.contains(i);
-        for (k, p) in points.iter().enumerate() {
-            if is_contact(p) {
-                timeline.push(Segment {
-                    state: State::Touch,
-                    start: p.clone(),
-                    end: p.clone(),
-                });
-            }
-            if let Some(next) = points.get(k + 1) {
-                let exact_lo = p.lo == p.hi && is_contact(p);
-                let exact_hi = next.lo == next.hi && is_contact(next);
-                let sample = sample_between(&p.hi, !exact_lo, &next.lo, !exact_hi);
-                let state = state_at(&f, &sample);
-                if state == State::Touch {
-                    return Err(CcdError::Internal(format!(
-                        "touch at sample u = {sample} between contacts"
-                    )));
-                }
-                timeline.push(Segment {
-                    state,
-                    start: p.clone(),
-                    end: next.clone(),
-                });
-            }
-        }
-        complete = reached_end;
-    }
-
-    let first_contact = match (state0, throughout) {
-        (State::Separate, Some(State::Separate)) => None,
-        (State::Separate, None) => timeline
-            .iter()
-            .find(|s| s.state != State::Separate)
-            .map(|s| s.start.clone()),
-        _ => Some(start.clone()),
-    };
-    Ok(Outcome {
-        collision_free: first_contact.is_none() && complete,
-        first_contact: first_contact.map(|i| map(&i)),
-        contacts: contact_u.iter().map(map).collect(),
-        timeline: timeline
-            .iter()
-            .map(|s| Segment {
-                state: s.state,
-                start: map(&s.start),
-                end: map(&s.end),
-            })
-            .collect(),
-        complete,
-        span,
-        stats,
+    found.into_outcome(&scene.span, stats, |u| match state_at(&f, u) {
+        State::Touch => Err(CcdError::Internal(format!(
+            "touch at sample u = {u} between contacts"
+        ))),
+        state => Ok(state),
     })
 }

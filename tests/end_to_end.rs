@@ -287,3 +287,32 @@ fn motion_degeneracies_are_errors_naming_the_field() {
     let e = run_toml(l, &Options::default()).unwrap_err();
     assert!(e.to_string().contains("b.motion.matrix"), "{e}");
 }
+
+#[test]
+fn first_contact_at_t0_exits_before_the_symbolic_stage() {
+    // Overlapping at t0: the answer is t0, and f(λ; t) is never built.
+    let text = format!("span = [3, 4]\n{}", sliding("3", "8"));
+    let out = run_toml(
+        &text,
+        &Options {
+            first_contact_only: true,
+            ..Options::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(
+        out.first_contact
+            .as_ref()
+            .map(|i| (i.lo.clone(), i.hi.clone())),
+        Some((Rat::from(3), Rat::from(3)))
+    );
+    assert_eq!(states(&out), [State::Overlap]);
+    assert!(!out.complete && !out.collision_free);
+    assert_eq!(
+        out.stats.deg_f, 0,
+        "no characteristic polynomial was needed"
+    );
+    // The full query agrees on the first contact.
+    let full = run(&text);
+    assert_eq!(full.first_contact, out.first_contact);
+}

@@ -122,3 +122,123 @@ pub struct Outcome {
     /// Degrees and counters.
     pub stats: Stats,
 }
+
+/// What a solver found on the normalised span `u ∈ [0, 1]`
+/// (`t = t0 + u·(t1 − t0)`): everything Algorithm 1's last loop needs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Findings {
+    /// The state at `u = 0`.
+    pub state0: State,
+    /// `Some(state)` when one state holds on the whole span (Theorems 5.5,
+    /// 5.6).
+    pub throughout: Option<State>,
+    /// The touch instants, in increasing order, with disjoint enclosures.
+    pub contacts: Vec<Instant>,
+    /// `false` when the search stopped at the first contact.
+    pub complete: bool,
+}
+
+/// A simple rational in the closed interval `[lo, hi]`, avoiding an end
+/// that may not be taken (`*_incl` false): the sample of a piece.
+pub fn sample_between(lo: &Rat, lo_incl: bool, hi: &Rat, hi_incl: bool) -> Rat {
+    let s = Rat::simplest_in(lo, hi);
+    if (s != *lo || lo_incl) && (s != *hi || hi_incl) && lo != hi {
+        return s;
+    }
+    let quarter = (hi - lo).mul_pow2(-2);
+    Rat::simplest_in(&(lo + &quarter), &(hi - &quarter))
+}
+
+impl Findings {
+    /// The timeline (Theorem 5.1): the span cut at `t0`, the contacts and
+    /// `t1`; each piece's state is `state_at` a sample strictly between its
+    /// ends (contacts are not samples; a non-contact end may be); contacts
+    /// are zero-length `Touch` segments. Times are mapped from `u` to `t`.
+    pub fn into_outcome<E>(
+        self,
+        span: &[Rat; 2],
+        stats: Stats,
+        mut state_at: impl FnMut(&Rat) -> Result<State, E>,
+    ) -> Result<Outcome, E> {
+        let (zero, one) = (Rat::zero(), Rat::one());
+        let start = Instant::exact(zero.clone());
+        let end = Instant::exact(one.clone());
+        let contacts = self.contacts;
+        let mut timeline: Vec<Segment> = Vec::new();
+        let complete = self.complete;
+        if let Some(state) = self.throughout {
+            timeline.push(Segment {
+                state,
+                start: start.clone(),
+                end: end.clone(),
+            });
+        } else if !complete && contacts.is_empty() {
+            // Stopped at t0 itself: the bodies are not separate there.
+            timeline.push(Segment {
+                state: self.state0,
+                start: start.clone(),
+                end: start.clone(),
+            });
+        } else {
+            let is_exact = |c: &Instant, at: &Rat| c.lo == *at && c.hi == *at;
+            let mut points: Vec<Instant> = Vec::new();
+            if contacts.first().is_none_or(|c| !is_exact(c, &zero)) {
+                points.push(start.clone());
+            }
+            points.extend(contacts.iter().cloned());
+            if complete && contacts.last().is_none_or(|c| !is_exact(c, &one)) {
+                points.push(end.clone());
+            }
+            let is_contact = |i: &Instant| contacts.contains(i);
+            for (k, p) in points.iter().enumerate() {
+                if is_contact(p) {
+                    timeline.push(Segment {
+                        state: State::Touch,
+                        start: p.clone(),
+                        end: p.clone(),
+                    });
+                }
+                if let Some(next) = points.get(k + 1) {
+                    let lo_incl = !(p.lo == p.hi && is_contact(p));
+                    let hi_incl = !(next.lo == next.hi && is_contact(next));
+                    let state = state_at(&sample_between(&p.hi, lo_incl, &next.lo, hi_incl))?;
+                    timeline.push(Segment {
+                        state,
+                        start: p.clone(),
+                        end: next.clone(),
+                    });
+                }
+            }
+        }
+        let first_contact = match (self.state0, self.throughout) {
+            (State::Separate, Some(State::Separate)) => None,
+            (State::Separate, None) => timeline
+                .iter()
+                .find(|s| s.state != State::Separate)
+                .map(|s| s.start.clone()),
+            _ => Some(start),
+        };
+        let dt = &span[1] - &span[0];
+        let map = |i: &Instant| Instant {
+            lo: &span[0] + &(&i.lo * &dt),
+            hi: &span[0] + &(&i.hi * &dt),
+            certified: i.certified,
+        };
+        Ok(Outcome {
+            collision_free: first_contact.is_none() && complete,
+            first_contact: first_contact.as_ref().map(map),
+            contacts: contacts.iter().map(map).collect(),
+            timeline: timeline
+                .iter()
+                .map(|s| Segment {
+                    state: s.state,
+                    start: map(&s.start),
+                    end: map(&s.end),
+                })
+                .collect(),
+            complete,
+            span: span.clone(),
+            stats,
+        })
+    }
+}
