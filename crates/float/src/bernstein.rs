@@ -1,0 +1,317 @@
+//! [`BernsteinF64`]: `f64` polynomials on `[0, 1]` in (scaled) Bernstein
+//! form, with a magnitude bound per coefficient, implementing
+//! [`RingOps`] so that the Section 4 closed forms
+//! ([`ccd_subres::closed_forms`]) run on them unchanged.
+//!
+//! The paper's float implementation (Section 5.3) keeps "polynomials …
+//! in the Bernstein form in order to improve the robustness and accuracy of
+//! the computations"; so does this one, from the characteristic polynomial's
+//! coefficients to the `sr` polynomials whose roots are the candidates.
+//!
+//! # Representation
+//! A polynomial of degree `n` is stored by its *scaled* Bernstein
+//! coefficients `p̃_i = C(n, i)·b_i`:
+//!
+//! ```text
+//! p(u) = Σ_i b_i C(n,i) u^i (1−u)^(n−i) = Σ_i p̃_i u^i (1−u)^(n−i),
+//! ```
+//!
+//! i.e. as a homogeneous polynomial in `(u, 1 − u)`. Products are then plain
+//! convolutions (the binomial weights of the Bernstein product formula are
+//! absorbed), degree elevation by `r` is a convolution with the binomial row
+//! `C(r, ·)` (multiplication by `(u + (1 − u))^r`), and the ordinary
+//! coefficients `b_i` that de Casteljau subdivision needs are recovered once,
+//! at the end ([`BernsteinF64::coefficients`]). Every operation is a sum of
+//! products with nonnegative weights, as in the ordinary Bernstein product.
+//!
+//! # Magnitudes
+//! Alongside each coefficient the same computation is carried out on the
+//! absolute values of the inputs with every `−` replaced by `+` (as in
+//! [`Approx`]): the magnitude polynomial bounds, coefficientwise and
+//! pointwise on `[0, 1]`, the terms whose rounding errors make up the error
+//! of the value. [`BernsteinF64::is_negligible`] compares against it.
+//!
+//! # Limits
+//! Scaled coefficients carry the factor `C(n, i)`, at most `C(n, n/2)`;
+//! `f64` holds that up to `n ≈ 1000`, far above the degree 288 of `sr0` for
+//! degree-4 affine motions (Table 3).
+
+use crate::approx::Approx;
+use ccd_arith::RingOps;
+
+/// An `f64` polynomial on `[0, 1]` in scaled Bernstein form, with
+/// magnitudes (module docs).
+///
+/// ```
+/// use ccd_arith::RingOps;
+/// use ccd_float::BernsteinF64;
+/// // (1 − 2u)² = 1 − 4u + 4u²: ordinary Bernstein coefficients [1, −1, 1].
+/// let p = BernsteinF64::from_power(&[1.0, -2.0]);
+/// let sq = p.times(&p);
+/// assert_eq!(sq.degree(), 2);
+/// assert_eq!(sq.coefficients(), vec![1.0, -1.0, 1.0]);
+/// assert_eq!(sq.eval(0.5).value, 0.0);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct BernsteinF64 {
+    /// Scaled coefficients of the value.
+    val: Vec<f64>,
+    /// Scaled coefficients of the magnitude (all ≥ 0).
+    mag: Vec<f64>,
+}
+
+/// `C(n, 0..=n)` in `f64` (exact while the intermediate products stay below
+/// `2^53`, e.g. for `n <= 50`; beyond, each entry carries at most `2n`
+/// roundings).
+pub(crate) fn binomial_row(n: usize) -> Vec<f64> {
+    let mut row = Vec::with_capacity(n + 1);
+    let mut c = 1.0f64;
+    row.push(c);
+    for i in 0..n {
+        c = c * (n - i) as f64 / (i + 1) as f64;
+        row.push(c.round());
+    }
+    row
+}
+
+/// `a * b` as a convolution of coefficient sequences.
+fn convolve(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0; a.len() + b.len() - 1];
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0.0 {
+            continue;
+        }
+        for (o, &y) in out[i..].iter_mut().zip(b) {
+            *o += x * y;
+        }
+    }
+    out
+}
+
+/// `Σ_i c_i x^i (1 − x)^(n − i)` for scaled coefficients `c` (degree
+/// `n = c.len() − 1`) at `x ∈ [0, 1]`: Horner in `x/(1 − x)` or `(1 − x)/x`,
+/// whichever is at most 1, so `O(n)` and without overflow.
+pub(crate) fn eval_scaled(c: &[f64], x: f64) -> f64 {
+    let n = c.len() - 1;
+    if x <= 0.5 {
+        let (s, w) = (x / (1.0 - x), 1.0 - x);
+        let acc = c.iter().rev().fold(0.0, |acc, &ci| acc * s + ci);
+        acc * w.powi(n as i32)
+    } else {
+        let (s, w) = ((1.0 - x) / x, x);
+        let acc = c.iter().fold(0.0, |acc, &ci| acc * s + ci);
+        acc * w.powi(n as i32)
+    }
+}
+
+impl BernsteinF64 {
+    /// A polynomial given by its power-basis coefficients in `u`, constant
+    /// term first (the magnitude of each input is its absolute value).
+    /// Conversion: `u^j = Σ_k C(n − j, k − j) u^k (1 − u)^(n − k)`.
+    pub fn from_power(power: &[f64]) -> BernsteinF64 {
+        if power.is_empty() {
+            return BernsteinF64::zero();
+        }
+        let n = power.len() - 1;
+        let mut val = vec![0.0; n + 1];
+        let mut mag = vec![0.0; n + 1];
+        for (j, &a) in power.iter().enumerate() {
+            if a == 0.0 {
+                continue;
+            }
+            let row = binomial_row(n - j);
+            for (m, &c) in row.iter().enumerate() {
+                val[j + m] += c * a;
+                mag[j + m] += c * a.abs();
+            }
+        }
+        BernsteinF64 { val, mag }
+    }
+
+    /// A polynomial given by its scaled Bernstein coefficients
+    /// `p̃_i = C(n, i)·b_i` (module docs), each known to full `f64`
+    /// precision (so its magnitude is its absolute value).
+    pub fn from_scaled(scaled: Vec<f64>) -> BernsteinF64 {
+        if scaled.is_empty() {
+            return BernsteinF64::zero();
+        }
+        let mag = scaled.iter().map(|c| c.abs()).collect();
+        BernsteinF64 { val: scaled, mag }
+    }
+
+    /// The nominal degree `n` of the Bernstein form (at least the true
+    /// degree; products and sums of the closed forms are not checked for
+    /// cancelling leading terms).
+    pub fn degree(&self) -> usize {
+        self.val.len() - 1
+    }
+
+    /// The ordinary Bernstein coefficients `b_i = p̃_i / C(n, i)` of the
+    /// value: the control points de Casteljau subdivision works on.
+    pub fn coefficients(&self) -> Vec<f64> {
+        unscale(&self.val)
+    }
+
+    /// The ordinary Bernstein coefficients of the magnitude bound.
+    pub fn magnitudes(&self) -> Vec<f64> {
+        unscale(&self.mag)
+    }
+
+    /// The value and magnitude at `u ∈ [0, 1]` (`O(n)`).
+    pub fn eval(&self, u: f64) -> Approx {
+        Approx {
+            value: eval_scaled(&self.val, u),
+            magnitude: eval_scaled(&self.mag, u),
+        }
+    }
+
+    /// Whether every coefficient is within `tol` (relative) of its
+    /// magnitude: the polynomial cannot be told from the zero polynomial at
+    /// that tolerance. This is how float mode decides `sr0 ≡ 0` and
+    /// `sr11 ≡ 0` (Algorithm 1, Theorems 5.4–5.6).
+    pub fn is_negligible(&self, tol: f64) -> bool {
+        self.val
+            .iter()
+            .zip(&self.mag)
+            .all(|(v, m)| v.abs() <= tol * m)
+    }
+
+    /// The same polynomial in degree `n` (`n >= self.degree()`).
+    fn elevated(&self, n: usize) -> BernsteinF64 {
+        let r = n - self.degree();
+        if r == 0 {
+            return self.clone();
+        }
+        let row = binomial_row(r);
+        BernsteinF64 {
+            val: convolve(&self.val, &row),
+            mag: convolve(&self.mag, &row),
+        }
+    }
+
+    /// Coefficientwise `self ± o` at a common degree.
+    fn add_signed(&self, o: &BernsteinF64, sign: f64) -> BernsteinF64 {
+        let n = self.degree().max(o.degree());
+        let (a, b);
+        let (a, b) = match (self.degree() == n, o.degree() == n) {
+            (true, true) => (self, o),
+            (true, false) => {
+                b = o.elevated(n);
+                (self, &b)
+            }
+            _ => {
+                a = self.elevated(n);
+                (&a, o)
+            }
+        };
+        BernsteinF64 {
+            val: a
+                .val
+                .iter()
+                .zip(&b.val)
+                .map(|(x, y)| x + sign * y)
+                .collect(),
+            mag: a.mag.iter().zip(&b.mag).map(|(x, y)| x + y).collect(),
+        }
+    }
+}
+
+/// `p̃_i / C(n, i)`.
+fn unscale(scaled: &[f64]) -> Vec<f64> {
+    let row = binomial_row(scaled.len() - 1);
+    scaled.iter().zip(&row).map(|(c, b)| c / b).collect()
+}
+
+impl RingOps for BernsteinF64 {
+    fn zero() -> Self {
+        BernsteinF64 {
+            val: vec![0.0],
+            mag: vec![0.0],
+        }
+    }
+    fn one() -> Self {
+        BernsteinF64::from_i64(1)
+    }
+    fn from_i64(v: i64) -> Self {
+        BernsteinF64 {
+            val: vec![v as f64],
+            mag: vec![(v as f64).abs()],
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.val.iter().chain(&self.mag).all(|c| *c == 0.0)
+    }
+    fn plus(&self, o: &Self) -> Self {
+        self.add_signed(o, 1.0)
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.add_signed(o, -1.0)
+    }
+    fn times(&self, o: &Self) -> Self {
+        BernsteinF64 {
+            val: convolve(&self.val, &o.val),
+            mag: convolve(&self.mag, &o.mag),
+        }
+    }
+    fn negated(&self) -> Self {
+        BernsteinF64 {
+            val: self.val.iter().map(|c| -c).collect(),
+            mag: self.mag.clone(),
+        }
+    }
+    fn div_small(&self, k: i64) -> Self {
+        let k = k as f64;
+        BernsteinF64 {
+            val: self.val.iter().map(|c| c / k).collect(),
+            mag: self.mag.iter().map(|c| c / k.abs()).collect(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn horner(p: &[f64], u: f64) -> f64 {
+        p.iter().rev().fold(0.0, |acc, c| acc * u + c)
+    }
+
+    #[test]
+    fn binomials_are_exact_where_f64_can_be() {
+        let row = binomial_row(10);
+        assert_eq!(row[5], 252.0);
+        assert_eq!(binomial_row(50)[25], 126410606437752.0);
+        let big = binomial_row(288);
+        assert!(big[144].is_finite() && big[144] > 1e84);
+    }
+
+    #[test]
+    fn ring_ops_match_power_basis() {
+        let p = [3.0, -1.0, 0.5, 2.0];
+        let q = [-1.0, 4.0];
+        let (bp, bq) = (BernsteinF64::from_power(&p), BernsteinF64::from_power(&q));
+        let prod = bp.times(&bq).minus(&bq).plus(&BernsteinF64::from_i64(7));
+        let sum = bq.plus(&bp).negated().div_small(2);
+        for u in [0.0, 0.1, 0.37, 0.5, 0.81, 1.0] {
+            let want = horner(&p, u) * horner(&q, u) - horner(&q, u) + 7.0;
+            assert!((prod.eval(u).value - want).abs() < 1e-12, "{u}");
+            let want = -(horner(&p, u) + horner(&q, u)) / 2.0;
+            assert!((sum.eval(u).value - want).abs() < 1e-12, "{u}");
+            assert!(prod.eval(u).magnitude >= prod.eval(u).value.abs());
+        }
+        assert_eq!(prod.degree(), 4);
+    }
+
+    #[test]
+    fn cancellation_is_negligible_relative_to_magnitude() {
+        let p = BernsteinF64::from_power(&[0.1, 0.7, -0.3]);
+        let zero = p.times(&p).minus(&p.times(&p));
+        assert!(zero.is_negligible(0.0));
+        let one = BernsteinF64::one();
+        let almost = one.minus(&one.plus(&BernsteinF64::from_power(&[1e-6])));
+        assert!(almost.is_negligible(1e-5));
+        assert!(!almost.is_negligible(1e-8));
+        assert!(!p.is_negligible(1e-3));
+        assert!(BernsteinF64::zero().is_zero() && !p.is_zero());
+    }
+}
