@@ -1,0 +1,369 @@
+//! Placements of a body as functions of the time `t`, over any [`Trig`]
+//! number type (`f64` intervals, multi-precision intervals, dual numbers of
+//! either), and from them the quadric matrices, `f(λ; t) = det(λA + B)`
+//! and the five quantities of Theorem 3.10 — one generic code path through
+//! `ccd-quadric` and `ccd-subres`.
+//!
+//! * `helical`: `R(t) = Rot(axis, rate·t)·R(orientation)` through the
+//!   quaternion `q(t) = (cos(θ/2)·|axis|, sin(θ/2)·axis) ⊗ orientation`,
+//!   `θ = rate·t`, so `R = M(q)/|q|²` (`|axis|` is a rigorous enclosure of
+//!   a square root of a rational, the only irrational constant), and
+//!   `c(t) = base + velocity·t + cos·cos(ωt) + sin·sin(ωt)`;
+//! * the rational kinds: Bézier curves (and rational Bézier curves through
+//!   their weights) by de Casteljau's algorithm in `u = (t − t0)/(t1 − t0)`.
+//!
+//! The inverse placement (up to a positive factor, see
+//! [`ccd_quadric::rigid_inverse`] and [`ccd_quadric::affine_inverse`]) and
+//! the congruence with the body's diagonal give `A(t)` with interior
+//! `XᵀA(t)X < 0`, as on the exact path.
+
+use crate::trig::Trig;
+use ccd_arith::{Rat, RingOps};
+use ccd_motion::{Body, HelicalCenter, Motion, Quat, Vec3};
+use ccd_quadric::{
+    affine_inverse, body_diagonal, characteristic, congruence, norm2, rigid_inverse,
+    rotation_numerator, Mat3, Mat4,
+};
+use ccd_subres::{closed_forms, QuarticInvariants};
+
+fn konst<N: Trig>(q: &Rat, prec: u32) -> N {
+    N::constant(q, prec)
+}
+
+fn konst_vec<N: Trig, const D: usize>(v: &[Rat; D], prec: u32) -> [N; D] {
+    std::array::from_fn(|i| konst(&v[i], prec))
+}
+
+/// A (rational) Bézier curve at `u` by de Casteljau's algorithm: the
+/// weighted numerators `Σ Bᵢ(u)·wᵢ·Pᵢ` and the denominator `Σ Bᵢ(u)·wᵢ`.
+fn bezier<N: Trig, const D: usize>(
+    points: &[[Rat; D]],
+    weights: Option<&[Rat]>,
+    u: &N,
+    prec: u32,
+) -> ([N; D], N) {
+    let one_minus = N::one().minus(u);
+    let mut rows: Vec<Vec<N>> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let w = weights
+                .and_then(|ws| ws.get(i))
+                .cloned()
+                .unwrap_or_else(Rat::one);
+            let mut row: Vec<N> = p.iter().map(|x| konst(&(x * &w), prec)).collect();
+            row.push(konst(&w, prec));
+            row
+        })
+        .collect();
+    while rows.len() > 1 {
+        rows = rows
+            .windows(2)
+            .map(|w| {
+                w[0].iter()
+                    .zip(&w[1])
+                    .map(|(a, b)| a.times(&one_minus).plus(&b.times(u)))
+                    .collect()
+            })
+            .collect();
+    }
+    let last = rows.pop().unwrap_or_else(|| vec![N::zero(); D + 1]);
+    let coords: [N; D] = std::array::from_fn(|k| last.get(k).cloned().unwrap_or_else(N::zero));
+    let w = last.get(D).cloned().unwrap_or_else(N::one);
+    (coords, w)
+}
+
+/// Hamilton product `p ⊗ q` (so that `R(p ⊗ q) = R(p)·R(q)`).
+fn quat_mul<N: RingOps>(p: &[N; 4], q: &[N; 4]) -> [N; 4] {
+    let [a1, b1, c1, d1] = p;
+    let [a2, b2, c2, d2] = q;
+    let m = |x: &N, y: &N| x.times(y);
+    [
+        m(a1, a2)
+            .minus(&m(b1, b2))
+            .minus(&m(c1, c2))
+            .minus(&m(d1, d2)),
+        m(a1, b2)
+            .plus(&m(b1, a2))
+            .plus(&m(c1, d2))
+            .minus(&m(d1, c2)),
+        m(a1, c2)
+            .minus(&m(b1, d2))
+            .plus(&m(c1, a2))
+            .plus(&m(d1, b2)),
+        m(a1, d2)
+            .plus(&m(b1, c2))
+            .minus(&m(c1, b2))
+            .plus(&m(d1, a2)),
+    ]
+}
+
+/// The helical orientation quaternion at `t` (not unit: `|q|² = |axis|²·|q0|²`).
+fn helical_quaternion<N: Trig>(
+    orientation: &Quat,
+    axis: &Vec3,
+    rate: &Rat,
+    t: &N,
+    prec: u32,
+) -> [N; 4] {
+    let half_angle = t.times(&konst(&rate.mul_pow2(-1), prec));
+    let (s, c) = half_angle.sin_cos();
+    let len2 = axis.iter().fold(Rat::zero(), |acc, x| &acc + &(x * x));
+    let len = N::sqrt_rat(&len2, prec);
+    let a: [N; 3] = konst_vec(axis, prec);
+    let spin = [
+        c.times(&len),
+        s.times(&a[0]),
+        s.times(&a[1]),
+        s.times(&a[2]),
+    ];
+    quat_mul(&spin, &konst_vec(orientation, prec))
+}
+
+/// The helical centre `base + velocity·t + cos·cos(ωt) + sin·sin(ωt)`.
+fn helical_center<N: Trig>(center: &HelicalCenter, t: &N, prec: u32) -> [N; 3] {
+    let periodic = center.frequency.signum() != 0
+        && center
+            .cos
+            .iter()
+            .chain(&center.sin)
+            .any(|x| x.signum() != 0);
+    let (s, c) = if periodic {
+        t.times(&konst(&center.frequency, prec)).sin_cos()
+    } else {
+        (N::zero(), N::one())
+    };
+    std::array::from_fn(|i| {
+        let mut x =
+            konst::<N>(&center.base[i], prec).plus(&konst::<N>(&center.velocity[i], prec).times(t));
+        if center.cos[i].signum() != 0 {
+            x = x.plus(&konst::<N>(&center.cos[i], prec).times(&c));
+        }
+        if center.sin[i].signum() != 0 {
+            x = x.plus(&konst::<N>(&center.sin[i], prec).times(&s));
+        }
+        x
+    })
+}
+
+/// The inverse placement `N(t)` of a motion (up to a positive factor, or a
+/// nonzero one for affine motions).
+fn inverse_placement<N: Trig>(motion: &Motion, span: &[Rat; 2], t: &N, prec: u32) -> Mat4<N> {
+    let rigid =
+        |q: &[N; 4], c: &[N; 3], w: &N| rigid_inverse(&rotation_numerator(q), &norm2(q), c, w);
+    let u = || {
+        let inv_dt = (&span[1] - &span[0]).recip().unwrap_or_else(Rat::one);
+        t.minus(&konst(&span[0], prec)).times(&konst(&inv_dt, prec))
+    };
+    match motion {
+        Motion::Static {
+            center,
+            orientation,
+        } => rigid(
+            &konst_vec(orientation, prec),
+            &konst_vec(center, prec),
+            &N::one(),
+        ),
+        Motion::Translation {
+            center,
+            orientation,
+        } => {
+            let (c, w) = bezier(&center.points, center.weights.as_deref(), &u(), prec);
+            rigid(&konst_vec(orientation, prec), &c, &w)
+        }
+        Motion::Rigid {
+            orientation,
+            center,
+        } => {
+            let uu = u();
+            let (q, _) = bezier(&orientation.points, None, &uu, prec);
+            let (c, w) = bezier(&center.points, center.weights.as_deref(), &uu, prec);
+            rigid(&q, &c, &w)
+        }
+        Motion::Affine { matrix } => {
+            let flat: Vec<[Rat; 12]> = matrix
+                .points
+                .iter()
+                .map(|m| std::array::from_fn(|k| m[k / 4][k % 4].clone()))
+                .collect();
+            let (v, w) = bezier(&flat, matrix.weights.as_deref(), &u(), prec);
+            let l: Mat3<N> = std::array::from_fn(|r| std::array::from_fn(|k| v[4 * r + k].clone()));
+            let d: [N; 3] = std::array::from_fn(|r| v[4 * r + 3].clone());
+            affine_inverse(&l, &d, &w)
+        }
+        Motion::Helical {
+            orientation,
+            axis,
+            rate,
+            center,
+        } => {
+            let q = helical_quaternion(orientation, axis, rate, t, prec);
+            rigid(&q, &helical_center(center, t, prec), &N::one())
+        }
+    }
+}
+
+/// The quadric matrix `A(t)` of a body (interior `XᵀA(t)X < 0`), up to a
+/// positive factor, enclosed in the number type `N`.
+pub fn quadric_at<N: Trig>(body: &Body, span: &[Rat; 2], t: &N, prec: u32) -> Mat4<N> {
+    let n = inverse_placement(&body.motion, span, t, prec);
+    congruence(&n, &body_diagonal(&konst_vec(&body.radii, prec)))
+}
+
+/// The world point the inverse placement `n` maps to the body origin,
+/// approximately: `−L⁻¹·v` for `n = [[L, v], [0, s]]` (Cramer's rule in
+/// `f64`); `None` when degenerate.
+fn approx_center<N: Trig>(n: &Mat4<N>) -> Option<[f64; 3]> {
+    let l: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| n[i][j].approx_value()));
+    let v: [f64; 3] = std::array::from_fn(|i| n[i][3].approx_value());
+    let det = |m: &[[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det(&l);
+    if !d.is_finite() || d == 0.0 {
+        return None;
+    }
+    let x: [f64; 3] = std::array::from_fn(|k| {
+        let mut mk = l;
+        for (row, vi) in mk.iter_mut().zip(&v) {
+            row[k] = -vi;
+        }
+        det(&mk) / d
+    });
+    x.iter().all(|c| c.is_finite()).then_some(x)
+}
+
+/// `n·T(s)` with `T(s) = [[I, s], [0, 1]]`: the same inverse placement in
+/// world coordinates whose origin is moved to `s`.
+fn shifted<N: Trig>(mut n: Mat4<N>, s: &[N; 3]) -> Mat4<N> {
+    for row in n.iter_mut() {
+        let mut last = row[3].clone();
+        for (x, sj) in row.iter().take(3).zip(s) {
+            if !x.is_zero() {
+                last = last.plus(&x.times(sj));
+            }
+        }
+        row[3] = last;
+    }
+    n
+}
+
+/// Quadric matrices of both bodies in a world frame centred between them.
+///
+/// Moving the world origin is the congruence by `T(s)` with
+/// `det T(s) = 1`, so `det(λA + B)` — and everything read from it — is
+/// exactly the same function of t for every constant `s`; centring the
+/// frame between the bodies keeps the matrix entries small, which makes
+/// the interval evaluation of the closed forms (whose terms cancel
+/// heavily) much tighter. `s` is a dyadic constant chosen per evaluation.
+fn quadrics_centred<N: Trig>(
+    a: &Body,
+    b: &Body,
+    span: &[Rat; 2],
+    t: &N,
+    prec: u32,
+) -> (Mat4<N>, Mat4<N>) {
+    let na = inverse_placement(&a.motion, span, t, prec);
+    let nb = inverse_placement(&b.motion, span, t, prec);
+    let (na, nb) = match (approx_center(&na), approx_center(&nb)) {
+        (Some(ca), Some(cb)) => {
+            // The midpoint rounded to a multiple of 2^−10: an exact constant.
+            let s: [N; 3] = std::array::from_fn(|i| {
+                let v = ((ca[i] + cb[i]) * 512.0).round();
+                let q = Rat::from_f64_exact(v)
+                    .unwrap_or_else(Rat::zero)
+                    .mul_pow2(-10);
+                konst(&q, prec)
+            });
+            (shifted(na, &s), shifted(nb, &s))
+        }
+        _ => (na, nb),
+    };
+    (
+        congruence(&na, &body_diagonal(&konst_vec(&a.radii, prec))),
+        congruence(&nb, &body_diagonal(&konst_vec(&b.radii, prec))),
+    )
+}
+
+/// `f(λ; t) = det(λA(t) + B(t))` as `[e, a, b, c, d]` (high → low) and the
+/// five quantities of Theorem 3.10 (Section 4 closed forms), enclosed in
+/// `N` at the time `t`.
+pub fn invariants_at<N: Trig>(
+    a: &Body,
+    b: &Body,
+    span: &[Rat; 2],
+    t: &N,
+    prec: u32,
+) -> ([N; 5], QuarticInvariants<N>) {
+    let (ma, mb) = quadrics_centred(a, b, span, t, prec);
+    let f = characteristic(&ma, &mb);
+    let inv = closed_forms(&f);
+    (f, inv)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ccd_arith::Interval;
+
+    fn r(x: i64) -> Rat {
+        Rat::from(x)
+    }
+
+    #[test]
+    fn helical_rotation_is_right_handed_and_centre_follows_the_helix() {
+        // Spin about z at rate 1: at t = π/2 the body x axis points along y.
+        let motion = Motion::Helical {
+            orientation: Motion::identity(),
+            axis: [r(0), r(0), r(2)],
+            rate: r(1),
+            center: HelicalCenter {
+                base: [r(0), r(0), r(0)],
+                velocity: [r(0), r(0), r(3)],
+                cos: [r(1), r(0), r(0)],
+                sin: [r(0), r(1), r(0)],
+                frequency: r(1),
+            },
+        };
+        let t = Interval::point(std::f64::consts::FRAC_PI_2);
+        let Motion::Helical {
+            orientation,
+            axis,
+            rate,
+            center,
+        } = &motion
+        else {
+            unreachable!()
+        };
+        let q = helical_quaternion(orientation, axis, rate, &t, 53);
+        let m = rotation_numerator(&q);
+        let n = norm2(&q);
+        // R = M/n; column 0 = R·e_x ≈ (0, 1, 0).
+        let col0 = [
+            m[0][0].mid() / n.mid(),
+            m[1][0].mid() / n.mid(),
+            m[2][0].mid() / n.mid(),
+        ];
+        assert!(
+            col0[0].abs() < 1e-12 && (col0[1] - 1.0).abs() < 1e-12,
+            "{col0:?}"
+        );
+        let c = helical_center(center, &t, 53);
+        assert!(c[0].contains_zero() && c[1].lo <= 1.0 && c[1].hi >= 1.0);
+        assert!((c[2].mid() - 1.5 * std::f64::consts::PI).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bezier_matches_exact_evaluation() {
+        let pts = [[r(0), r(1)], [r(4), r(1)], [r(2), r(-3)]];
+        let ws = [r(1), r(3), r(2)];
+        let u = Interval::point(0.25);
+        let (c, w) = bezier(&pts, Some(&ws), &u, 53);
+        // B0 = 9/16, B1 = 6/16, B2 = 1/16; weights 1, 3, 2.
+        let den = 9.0 / 16.0 + 18.0 / 16.0 + 2.0 / 16.0;
+        let x = (18.0 * 4.0 / 16.0 + 2.0 * 2.0 / 16.0) / den;
+        assert!((c[0].mid() / w.mid() - x).abs() < 1e-14);
+    }
+}
