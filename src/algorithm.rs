@@ -12,13 +12,28 @@ use ccd_solver::RealRoot;
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
+/// How the roots and signs are computed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// Exact and certified: every sign proven (the default).
+    #[default]
+    Exact,
+    /// The paper's Table 3 setting: `f64` Bernstein subdivision after the
+    /// exact set-up of `f(λ; t)`. Fast, NOT certified: every instant is
+    /// marked `certified: false`.
+    Float,
+}
+
 /// What a query asks for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Options {
-    /// Enclosures of contact instants get `hi − lo <= 10^(−digits)·(t1 − t0)`.
+    /// Enclosures of contact instants get `hi − lo <= 10^(−digits)·(t1 − t0)`
+    /// (exact arithmetic; the float mode stops at `f64` resolution).
     pub digits: u32,
     /// Stop at the earliest instant at which the bodies are not separate.
     pub first_contact_only: bool,
+    /// Exact (certified) or float.
+    pub arithmetic: Arithmetic,
 }
 
 impl Default for Options {
@@ -26,6 +41,7 @@ impl Default for Options {
         Options {
             digits: 15,
             first_contact_only: false,
+            arithmetic: Arithmetic::Exact,
         }
     }
 }
@@ -138,6 +154,16 @@ fn candidates<'a>(
 /// Runs Algorithm 1 on a rational scene.
 pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     let (a, b) = placed(scene)?;
+    if opts.arithmetic == Arithmetic::Float {
+        let float = ccd_float::Options {
+            first_contact_only: opts.first_contact_only,
+        };
+        return Ok(ccd_float::solve(
+            &CharPoly::from_placed(&a, &b),
+            &scene.span,
+            &float,
+        ));
+    }
     let state0 = state_at_start(&a, &b);
     let mut stats = Stats::default();
     if opts.first_contact_only && state0 != State::Separate {

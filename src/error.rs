@@ -25,6 +25,9 @@ pub enum CcdError {
         /// Why.
         reason: String,
     },
+    /// The interval path for non-rational motions refused the scene.
+    #[error(transparent)]
+    Enclosure(#[from] ccd_enclosure::EnclosureError),
     /// A broken invariant inside the engine (a bug: please report it).
     #[error("internal error: {0}")]
     Internal(String),

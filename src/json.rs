@@ -35,7 +35,8 @@ pub fn to_json(outcome: &Outcome) -> Value {
             "end": instant(&seg.end, d),
         })).collect::<Vec<_>>(),
         "complete": outcome.complete,
-        "certified": outcome.timeline.iter().all(|seg| seg.start.certified && seg.end.certified),
+        "certified": outcome.timeline.iter().all(|seg| seg.start.certified && seg.end.certified)
+            && outcome.contacts.iter().all(|c| c.certified),
         "stats": {
             "deg_f": s.deg_f,
             "deg_sr0": s.deg_sr0,

@@ -7,7 +7,9 @@
 //! Data flows one way: scene ([`Scene`]) → motion (`ccd-motion`) → quadric
 //! matrices `A(t)`, `B(t)` → characteristic polynomial `f(λ; t)` →
 //! subresultants `sr_ij(t)` (`ccd-subres`) → roots (`ccd-solver`) →
-//! timeline ([`Outcome`]).
+//! timeline ([`Outcome`]). Scenes with a non-rational (helical) motion go
+//! through certified interval enclosures instead (`ccd-enclosure`), where
+//! an instant that cannot be certified is reported with `certified: false`.
 //!
 //! ```
 //! use ccd_exact::{run, Options, Scene, State};
@@ -34,7 +36,7 @@ mod algorithm;
 mod error;
 mod json;
 
-pub use algorithm::{symbolic, Options};
+pub use algorithm::{symbolic, Arithmetic, Options};
 pub use ccd_scene::{Scene, SceneError};
 pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
 pub use error::CcdError;
@@ -49,7 +51,19 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
         });
     }
     scene.validate()?;
-    algorithm::run(scene, options)
+    let helical = [&scene.a, &scene.b].iter().any(|b| !b.motion.is_rational());
+    if !helical {
+        return algorithm::run(scene, options);
+    }
+    if options.arithmetic == Arithmetic::Float {
+        return Err(CcdError::Option { option: "--arithmetic", reason: "float arithmetic needs rational motions; helical scenes use certified interval enclosures".into() });
+    }
+    // Non-rational motions: certified interval enclosures (not exact algebra).
+    let opts = ccd_enclosure::Options {
+        digits: options.digits,
+        first_contact_only: options.first_contact_only,
+    };
+    ccd_enclosure::run(&scene.a, &scene.b, &scene.span, &opts).map_err(CcdError::from)
 }
 
 /// Parses a scene from TOML text and runs it.

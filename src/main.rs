@@ -1,6 +1,6 @@
 //! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
 
-use ccd_exact::{run_toml, to_json, Options, Outcome};
+use ccd_exact::{run_toml, to_json, Arithmetic, Options, Outcome};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -8,12 +8,14 @@ const HELP: &str = "\
 ccd-exact: exact, certified continuous collision detection for two moving ellipsoids
 
 USAGE:
-    ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]
+    ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--arithmetic exact|float]
 
 OPTIONS:
     --json            print the result as JSON (scene-format.md, format 1)
     --digits N        enclose each contact instant to 1e-N of the span (default 15)
     --first-contact   stop at the earliest instant the bodies are not separate
+    --arithmetic M    exact (default: every answer certified) or float (the
+                      paper's f64 Bernstein solver: faster, NOT certified)
     -h, --help        this help
     -V, --version     the version
 
@@ -21,6 +23,7 @@ EXAMPLES:
     ccd-exact tests/scenes/paper-example-5-1.toml
     ccd-exact tests/scenes/rigid-tumbling.toml --json --digits 30
     ccd-exact tests/scenes/paper-example-5-1.toml --first-contact
+    ccd-exact benches/scenes/affine-deg2.toml --arithmetic float
 
 Exit status: 0 on success, 2 on bad input (the message names the field).";
 
@@ -47,6 +50,18 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
             }
             "--json" => json = true,
             "--first-contact" => options.first_contact_only = true,
+            "--arithmetic" => {
+                options.arithmetic = match args.next().as_deref() {
+                    Some("exact") => Arithmetic::Exact,
+                    Some("float") => Arithmetic::Float,
+                    other => {
+                        return Err(format!(
+                            "option `--arithmetic`: expected `exact` or `float`, found `{}`",
+                            other.unwrap_or("")
+                        ))
+                    }
+                }
+            }
             "--digits" => {
                 let v = args.next().ok_or("option `--digits` needs a value")?;
                 options.digits = v
@@ -80,12 +95,20 @@ fn table(out: &Outcome) -> String {
     use std::fmt::Write as _;
     let s = &out.stats;
     let mut t = String::new();
-    let sr0 = s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string());
-    let _ = writeln!(
-        t,
-        "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n",
-        out.span[0], out.span[1], s.deg_f, s.branch
-    );
+    if s.branch.starts_with("interval") {
+        let _ = writeln!(
+            t,
+            "span [{}, {}]; non-rational motion: certified interval enclosures ({})\n",
+            out.span[0], out.span[1], s.branch
+        );
+    } else {
+        let sr0 = s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string());
+        let _ = writeln!(
+            t,
+            "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n",
+            out.span[0], out.span[1], s.deg_f, s.branch
+        );
+    }
     let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", "state", "from", "to");
     for seg in &out.timeline {
         let _ = writeln!(
@@ -120,6 +143,15 @@ fn table(out: &Outcome) -> String {
     }
     if !out.complete {
         t.push_str("(first contact only: the timeline stops there)\n");
+    }
+    if out
+        .timeline
+        .iter()
+        .any(|s| !s.start.certified || !s.end.certified)
+    {
+        t.push_str(
+            "NOT certified: float arithmetic (run with --arithmetic exact for proven answers)\n",
+        );
     }
     t
 }

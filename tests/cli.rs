@@ -138,3 +138,38 @@ fn a_closed_pipe_is_not_a_panic() {
     assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
     assert_eq!(out.status.code(), Some(0));
 }
+
+#[test]
+fn float_mode_says_it_is_not_certified() {
+    let out = cli(&[
+        &scene("paper-example-5-1.toml"),
+        "--json",
+        "--arithmetic",
+        "float",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["certified"], false);
+    assert!(v["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|c| c["certified"] == false));
+    let table =
+        String::from_utf8(cli(&[&scene("paper-example-5-1.toml"), "--arithmetic", "float"]).stdout)
+            .unwrap();
+    assert!(table.contains("NOT certified"), "{table}");
+    let exact: Value =
+        serde_json::from_slice(&cli(&[&scene("paper-example-5-1.toml"), "--json"]).stdout).unwrap();
+    assert_eq!(exact["certified"], true);
+    assert_eq!(
+        cli(&[&scene("paper-example-5-1.toml"), "--arithmetic", "fast"])
+            .status
+            .code(),
+        Some(2)
+    );
+}
