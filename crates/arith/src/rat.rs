@@ -199,6 +199,48 @@ impl Rat {
             (a, b, c, d) = (na, nb, nc, nd);
         }
     }
+    /// The dyadic rational `m/2^k` with the smallest `k` in `[lo, hi]`
+    /// (`lo <= hi`): the cheapest point of an interval to evaluate at exactly.
+    pub fn dyadic_in(lo: &Rat, hi: &Rat) -> Rat {
+        debug_assert!(lo <= hi);
+        // The smallest m with m/2^k >= lo, if m/2^k <= hi. Having a point at
+        // level k implies one at k + 1, so the smallest level is found by
+        // bisection below a level that surely has one (2^-k <= hi − lo).
+        let (a, b, c, d) = (&lo.num, &lo.den, &hi.num, &hi.den);
+        let at_level = |k: u64| -> Option<Int> {
+            let m = -(-a.shl(k)).div_floor(b);
+            (&m * d <= c.shl(k)).then_some(m)
+        };
+        let w = hi - lo;
+        if w.is_zero() {
+            return lo.clone();
+        }
+        let mut top = (w.den.bits() + 1).saturating_sub(w.num.bits()) + 1;
+        while at_level(top).is_none() {
+            top += 1;
+        }
+        let mut bottom = 0u64;
+        if let Some(m) = at_level(0) {
+            return Rat::from_int(m);
+        }
+        // Invariant: no point at `bottom`, a point at `top`.
+        while top - bottom > 1 {
+            let mid = bottom + (top - bottom) / 2;
+            if at_level(mid).is_some() {
+                top = mid;
+            } else {
+                bottom = mid;
+            }
+        }
+        let m = at_level(top).expect("a point at the top level");
+        Rat::dyadic(m, top)
+    }
+    /// The exponent `k` of a dyadic rational `m/2^k` in lowest terms, or
+    /// `None` if the denominator is not a power of two.
+    pub fn dyadic_exponent(&self) -> Option<u64> {
+        let k = self.den.trailing_zeros().unwrap_or(0);
+        (self.den.bits() == k + 1).then_some(k)
+    }
     /// `self · 2^k` for a signed `k`.
     pub fn mul_pow2(&self, k: i64) -> Rat {
         if k >= 0 {
@@ -497,6 +539,19 @@ mod tests {
         assert_eq!(Rat::from_frac(-1, 8).to_decimal(2), "-0.13");
         assert_eq!(Rat::from(7).to_decimal(0), "7");
         assert_eq!(Rat::zero().to_decimal(3), "0.000");
+    }
+
+    #[test]
+    fn dyadic_points() {
+        let d = Rat::dyadic_in(&Rat::from_frac(1, 3), &Rat::from_frac(2, 5));
+        assert_eq!(d, Rat::from_frac(3, 8));
+        assert_eq!(d.dyadic_exponent(), Some(3));
+        assert_eq!(
+            Rat::dyadic_in(&Rat::from_frac(-7, 3), &Rat::from(5)),
+            Rat::from(-2)
+        );
+        assert_eq!(Rat::from_frac(1, 3).dyadic_exponent(), None);
+        assert_eq!(Rat::from(4).dyadic_exponent(), Some(0));
     }
 
     #[test]

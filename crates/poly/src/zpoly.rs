@@ -34,9 +34,16 @@ pub(crate) fn hom_horner(c: &[Int], x: &Int, y: &Int) -> Int {
         return Int::zero();
     };
     let mut acc = last.clone();
+    let k = y.trailing_zeros().unwrap_or(0);
     if y.is_one() {
         for ci in rest.iter().rev() {
             acc = &acc * x + ci;
+        }
+    } else if y.bits() == k + 1 {
+        // y = 2^k (every dyadic point): c_i·y^(n−i) is a shift, so each
+        // step costs time linear in the size of the numbers, not a product.
+        for (j, ci) in rest.iter().rev().enumerate() {
+            acc = &acc * x + ci.shl(k * (j as u64 + 1));
         }
     } else {
         let mut ypow = Int::one();
@@ -318,6 +325,12 @@ impl ZPoly {
         let n = self.c.len().saturating_sub(1) as u32;
         let num = hom_horner(&self.c, x.numer(), x.denom());
         Rat::new(num, x.denom().pow(n)).expect("a power of a positive denominator is nonzero")
+    }
+    /// `p(x)·b^n` for `x = a/b` (`b > 0`, `n` the degree) as the integer
+    /// `Σ c_i a^i b^(n−i)`: the exact value without a gcd; for a dyadic
+    /// `x = a/2^k` it is `p(x)·2^(k·n)`.
+    pub fn eval_homogeneous(&self, x: &Rat) -> Int {
+        hom_horner(&self.c, x.numer(), x.denom())
     }
     /// The exact sign of `p(x)`: the sign of the integer `Σ c_i a^i b^(n−i)`
     /// for `x = a/b`, `b > 0` (no gcds, no rationals).

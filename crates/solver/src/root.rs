@@ -4,7 +4,7 @@
 
 use crate::scaled::ScaledPoly;
 use ccd_arith::{Interval, Rat};
-use ccd_poly::{Bernstein, ZPoly};
+use ccd_poly::ZPoly;
 use std::sync::{Arc, OnceLock};
 
 /// A real root `α` of a squarefree `p ∈ ℤ[t]`: either known exactly
@@ -85,6 +85,12 @@ impl RealRoot {
         } else {
             self.hi = x;
         }
+        debug_assert!(
+            self.sign_lo == 0
+                || (self.poly.sign_at(&self.lo) == self.sign_lo
+                    && self.poly.sign_at(&self.hi) == -self.sign_lo),
+            "isolating interval lost its sign change"
+        );
     }
 
     /// The sign of `p(x)`: the interval enclosure when it excludes zero,
@@ -121,10 +127,16 @@ impl RealRoot {
             x = nx;
         }
         let eps = (target.to_f64() * 0.25).max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE));
-        let (Some(a), Some(b)) = (Rat::from_f64_exact(x - eps), Rat::from_f64_exact(x + eps))
-        else {
+        let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
+            Rat::from_f64_exact(x - 2.0 * eps),
+            Rat::from_f64_exact(x - eps),
+            Rat::from_f64_exact(x + eps),
+            Rat::from_f64_exact(x + 2.0 * eps),
+        ) else {
             return false;
         };
+        // The shortest dyadics near x ∓ eps: cheaper exact evaluations.
+        let (a, b) = (Rat::dyadic_in(&a0, &a1), Rat::dyadic_in(&b0, &b1));
         let old = self.width();
         if a > self.lo && a < self.hi {
             self.cut(a);
@@ -168,54 +180,66 @@ impl RealRoot {
 
     /// The exact sign (−1, 0, 1) of `q(α)`.
     ///
-    /// First the certified filter: an interval enclosure of `q` over the
-    /// isolating interval, refined a few times. If it cannot exclude zero,
-    /// zero is decided exactly: `q(α) = 0` iff `g = gcd(p, q)` has a root in
-    /// the interval, and since `g | p` has at most the one root `α` there,
-    /// that is a sign change of `g` between the ends. If `q(α) ≠ 0`, the
-    /// interval is refined until `q`'s exact Bernstein coefficients over it
-    /// share one strict sign, which must happen since `q` has no root near `α`.
+    /// Each round tries, on the isolating interval `I = [lo, hi]`:
+    /// 1. the interval enclosure of `q` over `I` (cheap, but limited by
+    ///    rounding when `q`'s coefficients dwarf `q(α)`);
+    /// 2. the Taylor form with an EXACT centre and slope:
+    ///    `q(I) ⊆ q(m) + q'(m)·(I − m) + q''(I)·(I − m)²/2`, with `q(m)` and
+    ///    `q'(m)` computed exactly at a short dyadic `m ∈ I` and only `q''`
+    ///    enclosed in floating point — its rounding is multiplied by the
+    ///    squared width, so this decides any `q(α) ≠ 0` as soon as `I` is
+    ///    narrower than about `|q(α)/q'(α)|`.
+    ///
+    /// Zero is decided exactly: `q(α) = 0` iff `g = gcd(p, q)` has a root in
+    /// `I`, and since `g | p` has at most the one root `α` there, that is a
+    /// sign change of `g` between the ends. Between rounds the interval is
+    /// refined (each step proven by exact signs of `p`).
     pub fn sign_of(&mut self, q: &ZPoly) -> i32 {
         if q.is_zero() {
             return 0;
         }
-        if self.sign_lo == 0 {
-            return q.sign_at(&self.lo);
-        }
+        let n = q.degree().unwrap_or(0) as i64;
         let sq = ScaledPoly::new(q);
-        for _ in 0..4 {
-            if let Some(s) = sq.enclose(self.enclosure()).sign() {
-                if s != 0 {
-                    return s;
-                }
-            }
-            let w = self.width().mul_pow2(-12);
-            self.refine_to(&w);
+        let dq = q.derivative();
+        let ddq = ScaledPoly::with_shift(&dq.derivative(), sq.shift());
+        let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
+        let mut zero_checked = false;
+        for round in 0.. {
             if self.sign_lo == 0 {
                 return q.sign_at(&self.lo);
             }
-        }
-        let g = self.poly.gcd(q);
-        if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
-            return 0;
-        }
-        loop {
-            if let Some(s) = sq.enclose(self.enclosure()).sign() {
-                if s != 0 {
-                    return s;
+            let whole = self.enclosure();
+            if let Some(s) = decided(sq.enclose(whole)) {
+                return s;
+            }
+            let m = Rat::dyadic_in(&self.lo, &self.hi);
+            let k = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
+            // q(m) = H/2^(k·n) and q'(m) = H'/2^(k·(n−1)), both exact.
+            let qm = Interval::from_int_scaled(&q.eval_homogeneous(&m), sq.shift() + k * n);
+            let dqm = Interval::from_int_scaled(
+                &dq.eval_homogeneous(&m),
+                sq.shift() + k * (n - 1).max(0),
+            );
+            // I − m exactly, then enclosed: an f64 interval around α itself
+            // could not be narrower than an ulp of α.
+            let offset =
+                Interval::from_rat(&(&self.lo - &m)).hull(&Interval::from_rat(&(&self.hi - &m)));
+            let half = Interval::point(0.5);
+            if let Some(s) =
+                decided(qm + dqm * offset + ddq.enclose(whole) * offset.square() * half)
+            {
+                return s;
+            }
+            if !zero_checked && (round >= 1 || qm.contains_zero()) {
+                zero_checked = true;
+                let g = self.poly.gcd(q);
+                if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
+                    return 0;
                 }
             }
-            let b = Bernstein::from_power(q, &self.lo, &self.hi);
-            let s = b.scale().signum();
-            let first = b.coeffs()[0].signum();
-            if first != 0 && b.coeffs().iter().all(|c| c.signum() == first) {
-                return first * s;
-            }
-            let w = self.width().mul_pow2(-8);
+            let w = self.width().mul_pow2(-16);
             self.refine_to(&w);
-            if self.sign_lo == 0 {
-                return q.sign_at(&self.lo);
-            }
         }
+        unreachable!("the loop returns")
     }
 }

@@ -13,19 +13,33 @@ const TARGET_BITS: i64 = 600;
 pub(crate) struct ScaledPoly {
     coeffs: Vec<Interval>,
     approx: Vec<f64>,
+    shift: i64,
 }
 
 impl ScaledPoly {
     pub(crate) fn new(p: &ZPoly) -> ScaledPoly {
-        let max_bits = p.max_bits() as i64;
-        let shift = (max_bits - TARGET_BITS).max(0);
+        ScaledPoly::with_shift(p, (p.max_bits() as i64 - TARGET_BITS).max(0))
+    }
+
+    /// `p · 2^(-shift)` for a given shift (to compare with another scaled
+    /// polynomial, e.g. a derivative).
+    pub(crate) fn with_shift(p: &ZPoly, shift: i64) -> ScaledPoly {
         let coeffs: Vec<Interval> = p
             .coeffs()
             .iter()
             .map(|c: &Int| Interval::from_int_scaled(c, shift))
             .collect();
         let approx = coeffs.iter().map(Interval::mid).collect();
-        ScaledPoly { coeffs, approx }
+        ScaledPoly {
+            coeffs,
+            approx,
+            shift,
+        }
+    }
+
+    /// The power of two the coefficients were scaled by.
+    pub(crate) fn shift(&self) -> i64 {
+        self.shift
     }
 
     /// A certified enclosure of `{ p(x)·2^(-shift) : x ∈ X }` (interval Horner).
