@@ -46,6 +46,7 @@ fn ccd(c: &mut Criterion) {
         "benches/scenes/rigid-deg2.toml",
         "benches/scenes/affine-deg2.toml",
         "benches/scenes/affine-rational-deg2.toml",
+        "benches/scenes/rigid-288.toml",
     ] {
         let s = scene(name);
         let full = Options::default();

@@ -20,23 +20,6 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::time::Duration;
 
-/// Two tumbling bodies, quaternion curves of degrees 5 and 6: deg_t f = 48,
-/// deg sr0 = 288 (the degrees of Table 3's third row); separate at t0.
-const RIGID_288: &str = r#"
-[a]
-radii = [3, "0.5", "0.5"]
-[a.motion]
-kind = "rigid"
-orientation = [[1, 0, 0, 0], [1, 1, 0, 1], [2, 0, 1, 0], [1, 0, 1, 1], [1, 1, 1, 0], [2, 0, 0, 1]]
-center = [[-1, 0, 0], [0, 1, 0], [1, 0, 0]]
-[b]
-radii = [2, "1.5", "0.25"]
-[b.motion]
-kind = "rigid"
-orientation = [[1, 0, 0, 0], [1, 0, 1, 1], [1, 1, 0, 0], [2, 1, 0, 1], [1, 0, 0, 1], [1, 1, 0, 1], [2, 0, 1, 0]]
-center = [[-9, "1.2", 0], [0, "-1", "0.5"], [9, "0.9", "0.1"]]
-"#;
-
 fn file(name: &str) -> String {
     let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
@@ -62,7 +45,7 @@ fn scenes() -> Vec<(&'static str, Scene)> {
             "affine-rational-deg2",
             parse(&file("benches/scenes/affine-rational-deg2.toml")),
         ),
-        ("rigid-288", parse(RIGID_288)),
+        ("rigid-288", parse(&file("benches/scenes/rigid-288.toml"))),
     ]
 }
 
