@@ -70,6 +70,15 @@ pub fn state_at(out: &Outcome, t: &Rat) -> Option<State> {
     None
 }
 
+/// The states of a pass-through: separate, touch, overlap, touch, separate.
+pub const PASS_THROUGH: [State; 5] = [
+    State::Separate,
+    State::Touch,
+    State::Overlap,
+    State::Touch,
+    State::Separate,
+];
+
 /// The static classifier's answer for the scene at parameter `u ∈ [0, 1]`.
 pub fn static_state(scene: &Scene, u: &Rat) -> State {
     match classify_pair(&placed(&scene.a, u), &placed(&scene.b, u)) {

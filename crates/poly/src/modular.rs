@@ -122,12 +122,7 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
     let gamma = lca.gcd(lcb);
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
-    let max_limbs = sa
-        .iter()
-        .chain(&sb)
-        .map(|(_, l)| l.len())
-        .max()
-        .unwrap_or(0);
+    let max_limbs = crate::ntt::max_limbs(&sa, &sb);
     let (mut ra, mut rb) = (vec![0u64; da + 1], vec![0u64; db + 1]);
     // The current reconstruction: its degree, coefficients and modulus.
     let mut best: Option<(usize, Vec<Int>, Int)> = None;

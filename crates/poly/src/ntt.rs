@@ -131,6 +131,11 @@ pub(crate) fn to_limbs(c: &[Int]) -> Vec<(bool, Vec<u64>)> {
     c.iter().map(Int::to_u64_limbs).collect()
 }
 
+/// The length of the longest limb vector among two limb lists.
+pub(crate) fn max_limbs(a: &[(bool, Vec<u64>)], b: &[(bool, Vec<u64>)]) -> usize {
+    a.iter().chain(b).map(|(_, l)| l.len()).max().unwrap_or(0)
+}
+
 /// Residues of the coefficients modulo `f.p` into `out` (plain form).
 pub(crate) fn reduce_all(src: &[(bool, Vec<u64>)], f: &Fp, weights: &[u64], out: &mut [u64]) {
     for ((neg, limbs), o) in src.iter().zip(out.iter_mut()) {
@@ -270,12 +275,7 @@ pub(crate) fn mul_ntt(a: &[Int], b: &[Int]) -> Option<Vec<Int>> {
     let primes = ntt_primes(primes_for_bits(bound_bits));
     let fields: Vec<Fp> = primes.iter().map(|q| Fp::new(q.p)).collect();
     let (sa, sb) = (to_limbs(a), to_limbs(b));
-    let max_limbs = sa
-        .iter()
-        .chain(&sb)
-        .map(|(_, l)| l.len())
-        .max()
-        .unwrap_or(0);
+    let max_limbs = max_limbs(&sa, &sb);
     let m = fields.len();
     let mut residues = vec![0u64; m * out_len];
     let (mut fa, mut fb) = (vec![0u64; n], vec![0u64; n]);
