@@ -51,8 +51,7 @@ fn scenes() -> Vec<(&'static str, Scene)> {
 
 /// The exact, normalised `f(λ; u)`, as the exact path computes it.
 fn char_poly(s: &Scene) -> ccd_motion::CharPoly {
-    let placed = |b| ccd_motion::placed_quadric(b, &s.span).expect("a valid motion");
-    ccd_motion::CharPoly::from_placed(&placed(&s.a), &placed(&s.b))
+    ccd_motion::char_poly(&s.a, &s.b, &s.span).expect("a valid rational scene")
 }
 
 fn float(c: &mut Criterion) {

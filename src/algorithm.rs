@@ -173,6 +173,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
             throughout: None,
             contacts: vec![],
             complete: false,
+            certified: true,
         };
         return found.into_outcome(&scene.span, stats, |_| Ok(state0));
     }
@@ -186,6 +187,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         throughout: None,
         contacts: vec![],
         complete: true,
+        certified: true,
     };
     match candidates(&f, &inv, state0, &mut stats) {
         Candidates::Throughout(state) => found.throughout = Some(state),

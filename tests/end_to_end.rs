@@ -16,6 +16,14 @@ fn run(text: &str) -> Outcome {
     run_toml(text, &Options::default()).unwrap_or_else(|e| panic!("{e}"))
 }
 
+fn run_first_contact(text: &str) -> Outcome {
+    let options = Options {
+        first_contact_only: true,
+        ..Options::default()
+    };
+    run_toml(text, &options).unwrap_or_else(|e| panic!("{e}"))
+}
+
 fn states(out: &Outcome) -> Vec<State> {
     out.timeline.iter().map(|s| s.state).collect()
 }
@@ -245,14 +253,7 @@ motion = { kind = "translation", center = [[-3, 2, 0], [3, 2, 0]] }
 #[test]
 fn first_contact_only_stops_at_the_first() {
     let text = scene("paper-example-5-1.toml");
-    let out = run_toml(
-        &text,
-        &Options {
-            first_contact_only: true,
-            ..Options::default()
-        },
-    )
-    .unwrap();
+    let out = run_first_contact(&text);
     assert!(!out.complete);
     assert_eq!(out.contacts.len(), 1);
     assert_encloses(&out.contacts[0], 0.5395042868, 1e-10);
@@ -274,14 +275,7 @@ fn motion_degeneracies_are_errors_naming_the_field() {
 fn first_contact_at_t0_exits_before_the_symbolic_stage() {
     // Overlapping at t0: the answer is t0, and f(λ; t) is never built.
     let text = format!("span = [3, 4]\n{}", sliding("3", "8"));
-    let out = run_toml(
-        &text,
-        &Options {
-            first_contact_only: true,
-            ..Options::default()
-        },
-    )
-    .unwrap();
+    let out = run_first_contact(&text);
     assert_eq!(
         out.first_contact
             .as_ref()

@@ -27,8 +27,7 @@ fn exact(scene: &Scene, first_contact_only: bool) -> Outcome {
 
 /// The exact, normalised `f(λ; u)` the exact path also starts from.
 fn char_poly(scene: &Scene) -> ccd_motion::CharPoly {
-    let placed = |b| ccd_motion::placed_quadric(b, &scene.span).expect("a valid motion");
-    ccd_motion::CharPoly::from_placed(&placed(&scene.a), &placed(&scene.b))
+    ccd_motion::char_poly(&scene.a, &scene.b, &scene.span).expect("a valid rational scene")
 }
 
 fn float(scene: &Scene, first_contact_only: bool) -> Outcome {

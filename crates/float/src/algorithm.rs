@@ -99,20 +99,6 @@ fn state_on(p: &Prepared, u: f64, identically: &[Quantity]) -> State {
     }
 }
 
-/// Marks every instant of `out` as not certified.
-fn uncertified(mut out: Outcome) -> Outcome {
-    let instants = out
-        .timeline
-        .iter_mut()
-        .flat_map(|s| [&mut s.start, &mut s.end])
-        .chain(out.first_contact.iter_mut())
-        .chain(out.contacts.iter_mut());
-    for i in instants {
-        i.certified = false;
-    }
-    out
-}
-
 /// The first of 1/2, 1/4, 3/4, 1/8, 3/8, … (down to 2^-12) at which `p` is
 /// not zero to [`TOL_SIGN`]: the δ of Theorem 5.5.
 fn non_root_dyadic(p: &BernsteinF64) -> f64 {
@@ -217,6 +203,7 @@ pub fn solve_prepared(p: &Prepared, span: &[Rat; 2], options: &Options) -> Outco
         throughout: throughout.filter(|_| !stop_early),
         contacts: Vec::new(),
         complete: !stop_early,
+        certified: false,
     };
     if let (Some((poly, zeros)), false) = (candidates, stop_early) {
         stats.deg_candidates = Some(poly.degree());
@@ -239,7 +226,7 @@ pub fn solve_prepared(p: &Prepared, span: &[Rat; 2], options: &Options) -> Outco
         Ok::<State, std::convert::Infallible>(state_on(p, u.to_f64(), identically))
     });
     match laid_out {
-        Ok(out) => uncertified(out),
+        Ok(out) => out,
         Err(never) => match never {},
     }
 }

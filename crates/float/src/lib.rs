@@ -30,7 +30,7 @@
 //!    ([`ccd_subres::classify_with`] on [`Approx`] signs, module `approx`),
 //!    the states between contacts (Theorem 5.1), and the [`Outcome`] laid
 //!    out by the exact path's own rules
-//!    ([`ccd_timeline::Findings::into_outcome`]), every instant then marked
+//!    ([`ccd_timeline::Findings::into_outcome`]), with `certified: false`, so every instant is marked
 //!    uncertified.
 //!
 //! ```

@@ -24,7 +24,7 @@
 
 use crate::error::MotionError;
 use crate::kinds::Body;
-use crate::matrices::{moving_quadric, PlacedQuadric};
+use crate::matrices::{placed_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, Mat4};
@@ -98,11 +98,12 @@ impl CharPoly {
     }
 }
 
-/// `f(λ; u)` of two moving bodies, normalised (module docs).
+/// `f(λ; u)` of two moving bodies, normalised (module docs) with the
+/// determinant factors the motions know.
 pub fn char_poly(a: &Body, b: &Body, span: &[Rat; 2]) -> Result<CharPoly, MotionError> {
-    Ok(CharPoly::new(
-        &moving_quadric(a, span)?,
-        &moving_quadric(b, span)?,
+    Ok(CharPoly::from_placed(
+        &placed_quadric(a, span)?,
+        &placed_quadric(b, span)?,
     ))
 }
 

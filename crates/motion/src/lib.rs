@@ -14,4 +14,4 @@ pub mod matrices;
 pub use characteristic::{char_poly, normalise, normalise_with, CharPoly};
 pub use error::MotionError;
 pub use kinds::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
-pub use matrices::{moving_quadric, placed_quadric, placement_degree, PlacedQuadric};
+pub use matrices::{moving_quadric, placed_quadric, PlacedQuadric};

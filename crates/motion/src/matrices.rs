@@ -183,14 +183,3 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
 pub fn moving_quadric(body: &Body, span: &[Rat; 2]) -> Result<Mat4<ZPoly>, MotionError> {
     Ok(placed_quadric(body, span)?.matrix)
 }
-
-/// The degree in `u` of a body's placement (for choosing frames and for
-/// reports): the largest degree of its inverse placement's entries.
-pub fn placement_degree(body: &Body, span: &[Rat; 2]) -> Result<usize, MotionError> {
-    let n = to_integer_matrix(&inverse_placement(&body.motion, span)?.0);
-    Ok(n.iter()
-        .flatten()
-        .filter_map(ZPoly::degree)
-        .max()
-        .unwrap_or(0))
-}

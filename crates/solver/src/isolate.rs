@@ -20,17 +20,6 @@ use ccd_arith::{Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
-/// Counters of one isolation, for benchmarks and design notes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct IsolationStats {
-    /// Subdivision nodes visited.
-    pub nodes: usize,
-    /// Nodes whose coefficients were computed in exact integers.
-    pub exact_nodes: usize,
-    /// Exact evaluations at a split point the filter could not sign.
-    pub exact_midpoints: usize,
-}
-
 enum Coeffs {
     Float(FloatBernstein),
     Exact(Bernstein),
@@ -141,7 +130,6 @@ impl Node {
 pub struct RootIter {
     poly: Arc<ZPoly>,
     stack: Vec<Item>,
-    stats: IsolationStats,
 }
 
 impl RootIter {
@@ -169,16 +157,7 @@ impl RootIter {
         if first == 0 {
             stack.push(Item::Root(RealRoot::exact(poly.clone(), lo.clone())));
         }
-        RootIter {
-            poly,
-            stack,
-            stats: IsolationStats::default(),
-        }
-    }
-
-    /// What the isolation has cost so far.
-    pub fn stats(&self) -> IsolationStats {
-        self.stats
+        RootIter { poly, stack }
     }
 }
 
@@ -191,10 +170,8 @@ impl Iterator for RootIter {
                 Item::Root(r) => return Some(r),
                 Item::Node(n) => n,
             };
-            self.stats.nodes += 1;
             let Some(signs) = node.signs() else {
                 // The filter cannot sign a coefficient: redo this node exactly.
-                self.stats.exact_nodes += 1;
                 self.stack
                     .push(Item::Node(Node::exact(&self.poly, node.lo, node.hi)));
                 continue;
@@ -214,10 +191,7 @@ impl Iterator for RootIter {
             }
             let mid = Rat::midpoint(&node.lo, &node.hi);
             let (mut left, mut right, mid_sign) = node.split();
-            let mid_sign = mid_sign.unwrap_or_else(|| {
-                self.stats.exact_midpoints += 1;
-                self.poly.sign_at(&mid)
-            });
+            let mid_sign = mid_sign.unwrap_or_else(|| self.poly.sign_at(&mid));
             if mid_sign == 0 {
                 right.set_endpoint_zero(false);
             }

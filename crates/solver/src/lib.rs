@@ -22,7 +22,7 @@ mod isolate;
 mod root;
 mod scaled;
 
-pub use isolate::{IsolationStats, RootIter};
+pub use isolate::RootIter;
 pub use root::RealRoot;
 
 use ccd_arith::Rat;

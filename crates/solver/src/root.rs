@@ -85,12 +85,6 @@ impl RealRoot {
         } else {
             self.hi = x;
         }
-        debug_assert!(
-            self.sign_lo == 0
-                || (self.poly.sign_at(&self.lo) == self.sign_lo
-                    && self.poly.sign_at(&self.hi) == -self.sign_lo),
-            "isolating interval lost its sign change"
-        );
     }
 
     /// The sign of `p(x)`: the interval enclosure when it excludes zero,

@@ -136,6 +136,9 @@ pub struct Findings {
     pub contacts: Vec<Instant>,
     /// `false` when the search stopped at the first contact.
     pub complete: bool,
+    /// `false` when nothing the solver decided is proven (float mode): then
+    /// every instant of the outcome is marked `certified: false`.
+    pub certified: bool,
 }
 
 /// A simple rational in the closed interval `[lo, hi]`, avoiding an end
@@ -166,6 +169,7 @@ impl Findings {
         let contacts = self.contacts;
         let mut timeline: Vec<Segment> = Vec::new();
         let complete = self.complete;
+        let certified = self.certified;
         if let Some(state) = self.throughout {
             timeline.push(Segment {
                 state,
@@ -222,7 +226,7 @@ impl Findings {
         let map = |i: &Instant| Instant {
             lo: &span[0] + &(&i.lo * &dt),
             hi: &span[0] + &(&i.hi * &dt),
-            certified: i.certified,
+            certified: i.certified && certified,
         };
         Ok(Outcome {
             collision_free: first_contact.is_none() && complete,
