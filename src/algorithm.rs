@@ -6,7 +6,7 @@ use crate::CcdError;
 use ccd_arith::{Int, Rat};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
-use ccd_quadric::{characteristic, classify_quartic};
+use ccd_quadric::{characteristic, classify_quartic, congruence};
 use ccd_scene::Scene;
 use ccd_solver::RealRoot;
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
@@ -106,12 +106,15 @@ pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), C
     Ok((f, inv))
 }
 
-/// The state at `u = 0` straight from the placed matrices (no `f(λ; u)`).
+/// The state at `u = 0` straight from the placed quadrics (no `f(λ; u)`).
 fn state_at_start(a: &PlacedQuadric, b: &PlacedQuadric) -> State {
     let at0 = |m: &PlacedQuadric| {
-        m.matrix
-            .each_ref()
-            .map(|row| row.each_ref().map(|e| e.coeff(0)))
+        congruence(
+            &m.inverse
+                .each_ref()
+                .map(|row| row.each_ref().map(|e| e.coeff(0))),
+            &m.diagonal.each_ref().map(|e| e.coeff(0)),
+        )
     };
     State::from(classify_quartic(
         &characteristic(&at0(a), &at0(b)),

@@ -27,7 +27,7 @@ use crate::kinds::Body;
 use crate::matrices::{placed_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat};
 use ccd_poly::ZPoly;
-use ccd_quadric::{characteristic, Mat4};
+use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in ℤ[u],
 /// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
@@ -46,8 +46,13 @@ impl CharPoly {
         }
     }
 
-    /// `det(λA + B)` normalised with the determinant factors the motions
-    /// already know (no factorisation of `det A`, `det B` needed).
+    /// `det(λA + B)` of two placed bodies, normalised with the determinant
+    /// factors the motions already know (no factorisation of `det A`,
+    /// `det B` needed). Computed through the quadrics `NᵀDN` or, when the
+    /// inverse placements have higher degree than the placements (affine
+    /// motions: `N = adj M`), from the Plücker coordinates of the
+    /// placements ([`placed_characteristic`]: degree 16 instead of 48 for
+    /// degree-2 rational affine motions, before normalisation).
     pub fn from_placed(a: &PlacedQuadric, b: &PlacedQuadric) -> CharPoly {
         let candidates = a
             .det_factors
@@ -55,8 +60,22 @@ impl CharPoly {
             .chain(&b.det_factors)
             .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
             .collect();
+        // Before normalisation, coefficient k of f has degree at most
+        // 2·(k·deg A + (4 − k)·deg B) in the entries of the inverse placements
+        // N (through the quadrics NᵀDN) or of the placements M (through
+        // Plücker coordinates): the route with the lower maximum wins; on a
+        // tie (rigid motions, whose inverse is a transpose) the quadrics,
+        // whose five determinants take fewer products than 70 coordinates.
+        let degree = |m: &Mat4<ZPoly>| m.iter().flatten().filter_map(ZPoly::degree).max();
+        let through_quadrics = degree(&a.inverse).max(degree(&b.inverse))
+            <= degree(&a.placement).max(degree(&b.placement));
+        let f = if through_quadrics {
+            characteristic(&a.quadric(), &b.quadric())
+        } else {
+            placed_characteristic(&a.placement, &a.diagonal, &b.placement, &b.diagonal)
+        };
         CharPoly {
-            coeffs: normalise_with(characteristic(&a.matrix, &b.matrix), candidates),
+            coeffs: normalise_with(f, candidates),
         }
     }
 
@@ -297,9 +316,76 @@ mod tests {
             crate::matrices::placed_quadric(&rigid, &span).unwrap(),
             crate::matrices::placed_quadric(&affine, &span).unwrap(),
         );
+        // Plücker coordinates of the placements with known factors, against
+        // the adjugate quadrics with factors found by factorisation.
         let fast = CharPoly::from_placed(&pa, &pb);
-        let slow = CharPoly::new(&pa.matrix, &pb.matrix);
+        let slow = CharPoly::new(
+            &crate::matrices::moving_quadric(&rigid, &span).unwrap(),
+            &crate::matrices::moving_quadric(&affine, &span).unwrap(),
+        );
         assert_eq!(fast, slow);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The Plücker route (affine bodies) against the adjugate quadrics
+        /// with factors found by factorisation: the same normalised `f`.
+        #[test]
+        fn plucker_route_matches_adjugate_quadrics(
+            entries in proptest::collection::vec(-4i64..5, 72),
+            weights in proptest::collection::vec(1i64..4, 6),
+            radii in proptest::collection::vec(1i64..4, 6),
+        ) {
+            use crate::kinds::{Bezier, Motion};
+            let body = |k: usize| Body {
+                radii: std::array::from_fn(|i| Rat::from(radii[3 * k + i])),
+                motion: Motion::Affine {
+                    matrix: Bezier {
+                        points: (0..3)
+                            .map(|p| {
+                                std::array::from_fn(|r| {
+                                    std::array::from_fn(|c| {
+                                        // Diagonal-dominant so most motions stay regular.
+                                        let base = if r == c { 6 } else { 0 };
+                                        Rat::from(base + entries[36 * k + 12 * p + 4 * r + c])
+                                    })
+                                })
+                            })
+                            .collect(),
+                        weights: Some((0..3).map(|p| Rat::from(weights[3 * k + p])).collect()),
+                    },
+                },
+            };
+            let span = [Rat::zero(), Rat::one()];
+            let (a, b) = (body(0), body(1));
+            let (Ok(pa), Ok(pb)) = (
+                crate::matrices::placed_quadric(&a, &span),
+                crate::matrices::placed_quadric(&b, &span),
+            ) else {
+                return Err(proptest::test_runner::TestCaseError::reject("singular motion"));
+            };
+            let slow = CharPoly::new(&pa.quadric(), &pb.quadric());
+            let fast = CharPoly::from_placed(&pa, &pb);
+            proptest::prop_assert!(same_up_to_constant_scalings(&fast, &slow), "{fast:?} vs {slow:?}");
+        }
+    }
+
+    /// `c_k = κ·σ^k·d_k` (low → high in λ) for constants `κ, σ > 0`: the
+    /// normalisation is canonical up to these (it removes polynomial factors
+    /// and the integer content, not a constant rescaling of λ).
+    fn same_up_to_constant_scalings(f: &CharPoly, g: &CharPoly) -> bool {
+        // r_k = c_k/d_k must be a positive constant, r_k⁴ = r_0^(4−k)·r_4^k.
+        let ratio = |k: usize| -> Option<Rat> {
+            let (c, d) = (&f.coeffs[4 - k], &g.coeffs[4 - k]);
+            let (lc, ld) = (c.coeffs().last()?, d.coeffs().last()?);
+            (c.mul_int(ld) == d.mul_int(lc)).then(|| Rat::new(lc.clone(), ld.clone()).unwrap())
+        };
+        let Some(r) = (0..5).map(ratio).collect::<Option<Vec<Rat>>>() else {
+            return false;
+        };
+        let pow = |x: &Rat, e: usize| (0..e).fold(Rat::one(), |acc, _| &acc * x);
+        r.iter().all(|x| x.signum() > 0)
+            && (0..5).all(|k| pow(&r[k], 4) == &pow(&r[0], 4 - k) * &pow(&r[4], k))
     }
 
     #[test]

@@ -1,5 +1,6 @@
-//! Moving quadric matrices `A(t) ∝ N(t)ᵀ·D·N(t)` with integer polynomial
-//! entries in `u ∈ [0, 1]`, built from a motion and validated exactly.
+//! Placements `M(u)` (body → world) and moving quadric matrices
+//! `A(u) ∝ N(u)ᵀ·D·N(u)` (`N ∝ M⁻¹`) with integer polynomial entries in
+//! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
 use crate::curve::{bernstein_to_power, to_poly_curve};
 use crate::error::MotionError;
@@ -7,8 +8,8 @@ use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat};
 use ccd_poly::{QPoly, ZPoly};
 use ccd_quadric::{
-    affine_inverse, body_diagonal, congruence, det3, norm2, rigid_inverse, rotation_numerator,
-    Mat3, Mat4,
+    affine_inverse, affine_placement, body_diagonal, congruence, det3, norm2, rigid_inverse,
+    rigid_placement, rotation_numerator, Mat3, Mat4,
 };
 
 fn constant_vec<const N: usize>(v: &[Rat; N]) -> [QPoly; N] {
@@ -26,16 +27,49 @@ fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
     Some((&span[0] + &(&u * &(&span[1] - &span[0]))).to_f64())
 }
 
-/// The inverse placement `N(u)` over ℚ[u] (up to a positive factor, or a
-/// nonzero one for affine motions, whose square is what counts), and the
-/// polynomials whose powers make up `det N` (the weight curve, and `|q|²`
-/// or `det L`): the only factors `det A` can have.
-fn inverse_placement(
-    motion: &Motion,
-    span: &[Rat; 2],
-) -> Result<(Mat4<QPoly>, Vec<QPoly>), MotionError> {
-    let rigid = |q: &[QPoly; 4], center: &[QPoly; 3], w: &QPoly| {
-        rigid_inverse(&rotation_numerator(q), &norm2(q), center, w)
+/// A rational placement `X = R(u)·Xbody + C(u)/w(u)` (rigid, `R = M/n`) or
+/// `X = (L(u)·Xbody + d(u))/w(u)` (affine) over ℚ[u].
+enum Frame {
+    Rigid {
+        m: Mat3<QPoly>,
+        n: QPoly,
+        center: [QPoly; 3],
+        w: QPoly,
+    },
+    Affine {
+        l: Mat3<QPoly>,
+        d: [QPoly; 3],
+        w: QPoly,
+    },
+}
+
+impl Frame {
+    /// The homogeneous body → world matrix, up to a factor nonzero on the span.
+    fn forward(&self) -> Mat4<QPoly> {
+        match self {
+            Frame::Rigid { m, n, center, w } => rigid_placement(m, n, center, w),
+            Frame::Affine { l, d, w } => affine_placement(l, d, w),
+        }
+    }
+
+    /// The world → body matrix `N(u)`, up to a factor nonzero on the span.
+    fn inverse(&self) -> Mat4<QPoly> {
+        match self {
+            Frame::Rigid { m, n, center, w } => rigid_inverse(m, n, center, w),
+            Frame::Affine { l, d, w } => affine_inverse(l, d, w),
+        }
+    }
+}
+
+/// The placement of a body over ℚ[u], validated exactly on the span, and
+/// the polynomials whose powers make up its determinant (the weight curve,
+/// and `|q|²` or `det L`): the only factors `det A` can have.
+fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame, Vec<QPoly>), MotionError> {
+    let rigid = |q: &[QPoly; 4], center: [QPoly; 3], w: QPoly| Frame::Rigid {
+        m: rotation_numerator(q),
+        n: norm2(q),
+        center,
+        w,
     };
     let check_weight = |w: &QPoly| match first_root_in_span(w.prim(), span) {
         Some(at) => Err(MotionError::WeightVanishes { at }),
@@ -48,8 +82,8 @@ fn inverse_placement(
         } => Ok((
             rigid(
                 &constant_vec(orientation),
-                &constant_vec(center),
-                &QPoly::one(),
+                constant_vec(center),
+                QPoly::one(),
             ),
             vec![],
         )),
@@ -59,8 +93,11 @@ fn inverse_placement(
         } => {
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
-            let m = rigid(&constant_vec(orientation), &c.numerators, &c.denominator);
-            Ok((m, vec![c.denominator]))
+            let w = c.denominator.clone();
+            Ok((
+                rigid(&constant_vec(orientation), c.numerators, c.denominator),
+                vec![w],
+            ))
         }
         Motion::Rigid {
             orientation,
@@ -75,10 +112,8 @@ fn inverse_placement(
             }
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
-            Ok((
-                rigid(&q, &c.numerators, &c.denominator),
-                vec![c.denominator, norm2(&q)],
-            ))
+            let factors = vec![c.denominator.clone(), norm2(&q)];
+            Ok((rigid(&q, c.numerators, c.denominator), factors))
         }
         Motion::Affine { matrix } => {
             let entry = |r: usize, k: usize| -> Bezier<[Rat; 1]> {
@@ -102,7 +137,8 @@ fn inverse_placement(
             if let Some(at) = first_root_in_span(det_l.prim(), span) {
                 return Err(MotionError::SingularAffine { at });
             }
-            Ok((affine_inverse(&l, &d, &w), vec![w, det_l]))
+            let factors = vec![w.clone(), det_l];
+            Ok((Frame::Affine { l, d, w }, factors))
         }
         Motion::Helical { .. } => Err(MotionError::NotRational { kind: "helical" }),
     }
@@ -121,8 +157,9 @@ fn lcm(a: &Int, b: &Int) -> Int {
 }
 
 /// Clears the denominators of a matrix over ℚ[u] by one positive integer
-/// and divides out the polynomial gcd of all entries (a common factor `g`
-/// of `N` scales the quadric by `g²`, which never changes a sign).
+/// and divides out the polynomial gcd of all entries (a common factor `g`,
+/// nonzero on the span, scales the quadric by `g²` or, for a placement,
+/// rescales λ by `g²`: neither changes a sign).
 fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
     let den = n
         .iter()
@@ -147,39 +184,54 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
     std::array::from_fn(|i| (&Rat::from_int(den.clone()) * &v[i]).floor())
 }
 
-/// A moving quadric and what is known about its determinant.
+/// A placed body: its placement, its body quadric and what is known about
+/// the determinant of the placement.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlacedQuadric {
-    /// `A(u)` with integer polynomial entries (interior `XᵀA(u)X < 0`), up to
-    /// a factor positive on the span.
-    pub matrix: Mat4<ZPoly>,
-    /// Primitive polynomials nonzero on the span such that `det A(u)` is a
+    /// The homogeneous body → world matrix `M(u)` with integer polynomial
+    /// entries, up to a factor nonzero on the span.
+    pub placement: Mat4<ZPoly>,
+    /// The world → body matrix `N(u) ∝ M(u)⁻¹`, integer polynomial entries,
+    /// up to a factor nonzero on the span.
+    pub inverse: Mat4<ZPoly>,
+    /// The body quadric `diag(D)` (interior `XᵀDX < 0`), scaled to integers.
+    pub diagonal: [ZPoly; 4],
+    /// Primitive polynomials nonzero on the span such that `det M(u)` is a
     /// constant times a product of their powers.
     pub det_factors: Vec<ZPoly>,
 }
 
-/// The moving quadric of a body, with the factors of its determinant.
-/// Fails if the motion degenerates somewhere on the span (decided exactly
-/// with the solver) or is not rational.
+impl PlacedQuadric {
+    /// The moving quadric `A(u) = N(u)ᵀ·D·N(u)` in world coordinates
+    /// (interior `XᵀA(u)X < 0`), up to a factor positive on the span.
+    pub fn quadric(&self) -> Mat4<ZPoly> {
+        congruence(&self.inverse, &self.diagonal)
+    }
+}
+
+/// A body's placement and body quadric, with the factors of the placement's
+/// determinant. Fails if the motion degenerates somewhere on the span
+/// (decided exactly with the solver) or is not rational.
 pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, MotionError> {
-    let (inverse, factors) = inverse_placement(&body.motion, span)?;
-    let n = to_integer_matrix(&inverse);
-    let d = rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant);
+    let (frame, factors) = frame(&body.motion, span)?;
     let det_factors = factors
         .iter()
         .map(|f| f.prim().clone())
         .filter(|f| f.degree().unwrap_or(0) > 0)
         .collect();
     Ok(PlacedQuadric {
-        matrix: congruence(&n, &d),
+        placement: to_integer_matrix(&frame.forward()),
+        inverse: to_integer_matrix(&frame.inverse()),
+        diagonal: rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant),
         det_factors,
     })
 }
 
-/// The moving quadric `A(u)` of a body (interior `XᵀA(u)X < 0`), with
-/// integer polynomial entries in `u = (t − t0)/(t1 − t0)`, up to a factor
-/// positive on the span. Fails if the motion degenerates somewhere on the
-/// span (decided exactly with the solver) or is not rational.
+/// The moving quadric `A(u) = N(u)ᵀ·D·N(u)` of a body (interior
+/// `XᵀA(u)X < 0`) in world coordinates, with integer polynomial entries in
+/// `u = (t − t0)/(t1 − t0)`, up to a factor positive on the span. Fails if
+/// the motion degenerates somewhere on the span (decided exactly with the
+/// solver) or is not rational.
 pub fn moving_quadric(body: &Body, span: &[Rat; 2]) -> Result<Mat4<ZPoly>, MotionError> {
-    Ok(placed_quadric(body, span)?.matrix)
+    Ok(placed_quadric(body, span)?.quadric())
 }

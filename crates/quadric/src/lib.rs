@@ -11,5 +11,8 @@ mod placement;
 
 pub use ccd_subres::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
-pub use matrix::{adj3, characteristic, congruence, det3, det4, Mat3, Mat4};
-pub use placement::{affine_inverse, body_diagonal, norm2, rigid_inverse, rotation_numerator};
+pub use matrix::{adj3, characteristic, congruence, det3, det4, placed_characteristic, Mat3, Mat4};
+pub use placement::{
+    affine_inverse, affine_placement, body_diagonal, norm2, rigid_inverse, rigid_placement,
+    rotation_numerator,
+};

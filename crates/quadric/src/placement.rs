@@ -60,6 +60,33 @@ pub fn rigid_inverse<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> 
     out
 }
 
+/// The rigid placement `X = R·Xbody + C/w` with `R = M/n` itself, as a
+/// homogeneous matrix times the factor `n·w` (nonzero): `[[w·M, n·C], [0, n·w]]`.
+/// Its determinant is `n⁴·w⁴` (`det M = n³`).
+pub fn rigid_placement<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
+    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for i in 0..3 {
+        for j in 0..3 {
+            out[i][j] = w.times(&m[i][j]);
+        }
+        out[i][3] = n.times(&center[i]);
+    }
+    out[3][3] = n.times(w);
+    out
+}
+
+/// The affine placement `X = (L·Xbody + d)/w` as the homogeneous matrix
+/// `[[L, d], [0, w]]` (determinant `w·det L`).
+pub fn affine_placement<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
+    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for i in 0..3 {
+        out[i][..3].clone_from_slice(&l[i]);
+        out[i][3] = d[i].clone();
+    }
+    out[3][3] = w.clone();
+    out
+}
+
 /// Inverse of the affine placement `X = (L·Xbody + d)/w` up to the nonzero
 /// factor `w·det L` (whose square is what the quadric sees): the adjugate of
 /// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
