@@ -6,7 +6,7 @@ use crate::CcdError;
 use ccd_arith::{Int, Rat};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
-use ccd_quadric::{characteristic, classify_quartic, congruence};
+use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
 use ccd_solver::RealRoot;
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
@@ -106,18 +106,11 @@ pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), C
     Ok((f, inv))
 }
 
-/// The state at `u = 0` straight from the placed quadrics (no `f(λ; u)`).
+/// The state at `u = 0` straight from the placements (no `f(λ; u)`).
 fn state_at_start(a: &PlacedQuadric, b: &PlacedQuadric) -> State {
-    let at0 = |m: &PlacedQuadric| {
-        congruence(
-            &m.inverse
-                .each_ref()
-                .map(|row| row.each_ref().map(|e| e.coeff(0))),
-            &m.diagonal.each_ref().map(|e| e.coeff(0)),
-        )
-    };
+    let zero = Rat::zero();
     State::from(classify_quartic(
-        &characteristic(&at0(a), &at0(b)),
+        &characteristic(&a.quadric_at(&zero), &b.quadric_at(&zero)),
         Int::signum,
     ))
 }

@@ -66,13 +66,11 @@ impl CharPoly {
         // Plücker coordinates): the route with the lower maximum wins; on a
         // tie (rigid motions, whose inverse is a transpose) the quadrics,
         // whose five determinants take fewer products than 70 coordinates.
-        let degree = |m: &Mat4<ZPoly>| m.iter().flatten().filter_map(ZPoly::degree).max();
-        let through_quadrics = degree(&a.inverse).max(degree(&b.inverse))
-            <= degree(&a.placement).max(degree(&b.placement));
-        let f = if through_quadrics {
+        let ((ma, na), (mb, nb)) = (a.degree_bounds(), b.degree_bounds());
+        let f = if na.max(nb) <= ma.max(mb) {
             characteristic(&a.quadric(), &b.quadric())
         } else {
-            placed_characteristic(&a.placement, &a.diagonal, &b.placement, &b.diagonal)
+            placed_characteristic(a.placement(), &a.diagonal, b.placement(), &b.diagonal)
         };
         CharPoly {
             coeffs: normalise_with(f, candidates),

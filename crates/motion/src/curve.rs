@@ -2,29 +2,36 @@
 
 use crate::kinds::Bezier;
 use ccd_arith::{Int, Rat};
-use ccd_poly::QPoly;
+use ccd_poly::{QPoly, ZPoly};
 
 /// `Σ Bᵢⁿ(u)·vᵢ` in the power basis: the coefficient of `uʲ` is
-/// `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`.
+/// `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`, computed on the integers
+/// `L·vᵢ` for the common denominator `L` (no rational arithmetic).
 pub fn bernstein_to_power(values: &[Rat]) -> QPoly {
     let n = values.len().saturating_sub(1);
     let binom = binomials(n);
-    let coeffs: Vec<Rat> = (0..=n)
+    let den = values.iter().fold(Int::one(), |l, v| {
+        let g = l.gcd(v.denom());
+        (&l * v.denom()).div_exact(&g)
+    });
+    let ints: Vec<Int> = values
+        .iter()
+        .map(|v| (v.numer() * &den).div_exact(v.denom()))
+        .collect();
+    let coeffs: Vec<Int> = (0..=n)
         .map(|j| {
-            let mut s = Rat::zero();
-            for (i, v) in values.iter().enumerate().take(j + 1) {
-                let c = Rat::from_int(binom[j][i].clone());
-                let term = &c * v;
-                s = if (j - i) % 2 == 0 {
-                    &s + &term
-                } else {
-                    &s - &term
-                };
+            let mut s = Int::zero();
+            for (i, v) in ints.iter().enumerate().take(j + 1) {
+                let term = &binom[j][i] * v;
+                s = if (j - i) % 2 == 0 { s + term } else { s - term };
             }
-            &s * &Rat::from_int(binom[n][j].clone())
+            s * &binom[n][j]
         })
         .collect();
-    QPoly::from_rats(&coeffs)
+    QPoly::from_parts(
+        Rat::new(Int::one(), den).expect("positive denominator"),
+        ZPoly::new(coeffs),
+    )
 }
 
 /// Pascal's triangle up to row `n`.

@@ -5,12 +5,13 @@
 use crate::curve::{bernstein_to_power, to_poly_curve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Rat, RingOps};
 use ccd_poly::{QPoly, ZPoly};
 use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, congruence, det3, norm2, rigid_inverse,
     rigid_placement, rotation_numerator, Mat3, Mat4,
 };
+use std::sync::OnceLock;
 
 fn constant_vec<const N: usize>(v: &[Rat; N]) -> [QPoly; N] {
     std::array::from_fn(|i| QPoly::constant(v[i].clone()))
@@ -27,36 +28,76 @@ fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
     Some((&span[0] + &(&u * &(&span[1] - &span[0]))).to_f64())
 }
 
-/// A rational placement `X = R(u)·Xbody + C(u)/w(u)` (rigid, `R = M/n`) or
-/// `X = (L(u)·Xbody + d(u))/w(u)` (affine) over ℚ[u].
-enum Frame {
+/// A rational placement `X = R·Xbody + C/w` (rigid, `R = M/n`) or
+/// `X = (L·Xbody + d)/w` (affine), with entries in ℚ[u] (or their values at
+/// one `u`).
+#[derive(Clone, Debug, PartialEq)]
+enum Frame<P> {
     Rigid {
-        m: Mat3<QPoly>,
-        n: QPoly,
-        center: [QPoly; 3],
-        w: QPoly,
+        m: Mat3<P>,
+        n: P,
+        center: [P; 3],
+        w: P,
     },
     Affine {
-        l: Mat3<QPoly>,
-        d: [QPoly; 3],
-        w: QPoly,
+        l: Mat3<P>,
+        d: [P; 3],
+        w: P,
     },
 }
 
-impl Frame {
+impl<P: RingOps> Frame<P> {
     /// The homogeneous body → world matrix, up to a factor nonzero on the span.
-    fn forward(&self) -> Mat4<QPoly> {
+    fn forward(&self) -> Mat4<P> {
         match self {
             Frame::Rigid { m, n, center, w } => rigid_placement(m, n, center, w),
             Frame::Affine { l, d, w } => affine_placement(l, d, w),
         }
     }
 
-    /// The world → body matrix `N(u)`, up to a factor nonzero on the span.
-    fn inverse(&self) -> Mat4<QPoly> {
+    /// The world → body matrix `N ∝ M⁻¹`, up to a factor nonzero on the span.
+    fn inverse(&self) -> Mat4<P> {
         match self {
             Frame::Rigid { m, n, center, w } => rigid_inverse(m, n, center, w),
             Frame::Affine { l, d, w } => affine_inverse(l, d, w),
+        }
+    }
+
+    /// Every entry mapped by `f`.
+    fn map<Q>(&self, f: impl Fn(&P) -> Q) -> Frame<Q> {
+        let m3 = |m: &Mat3<P>| m.each_ref().map(|row| row.each_ref().map(&f));
+        match self {
+            Frame::Rigid { m, n, center, w } => Frame::Rigid {
+                m: m3(m),
+                n: f(n),
+                center: center.each_ref().map(&f),
+                w: f(w),
+            },
+            Frame::Affine { l, d, w } => Frame::Affine {
+                l: m3(l),
+                d: d.each_ref().map(&f),
+                w: f(w),
+            },
+        }
+    }
+}
+
+impl Frame<QPoly> {
+    /// Degree bounds `(forward, inverse)` of the matrices above, from the
+    /// entries' degrees (no products formed).
+    fn degree_bounds(&self) -> (usize, usize) {
+        let deg = |p: &QPoly| p.degree().unwrap_or(0);
+        let max3 = |m: &Mat3<QPoly>| m.iter().flatten().map(deg).max().unwrap_or(0);
+        let maxv = |v: &[QPoly; 3]| v.iter().map(deg).max().unwrap_or(0);
+        match self {
+            Frame::Rigid { m, n, center, w } => {
+                let (m, n, c, w) = (max3(m), deg(n), maxv(center), deg(w));
+                ((w + m).max(n + c).max(n + w), (w + m).max(m + c).max(n + w))
+            }
+            Frame::Affine { l, d, w } => {
+                let (l, d, w) = (max3(l), maxv(d), deg(w));
+                (l.max(d).max(w), (w + 2 * l).max(2 * l + d).max(3 * l))
+            }
         }
     }
 }
@@ -64,7 +105,7 @@ impl Frame {
 /// The placement of a body over ℚ[u], validated exactly on the span, and
 /// the polynomials whose powers make up its determinant (the weight curve,
 /// and `|q|²` or `det L`): the only factors `det A` can have.
-fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame, Vec<QPoly>), MotionError> {
+fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>), MotionError> {
     let rigid = |q: &[QPoly; 4], center: [QPoly; 3], w: QPoly| Frame::Rigid {
         m: rotation_numerator(q),
         n: norm2(q),
@@ -156,27 +197,20 @@ fn lcm(a: &Int, b: &Int) -> Int {
     (a * b).div_exact(&a.gcd(b)).abs()
 }
 
-/// Clears the denominators of a matrix over ℚ[u] by one positive integer
-/// and divides out the polynomial gcd of all entries (a common factor `g`,
-/// nonzero on the span, scales the quadric by `g²` or, for a placement,
-/// rescales λ by `g²`: neither changes a sign).
+/// The matrix over ℚ[u] times the positive rational that makes its entries
+/// integer polynomials with no common integer factor (a constant factor
+/// `c` of a placement would rescale λ by `c²` and grow every coefficient).
 fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
-    let den = n
-        .iter()
-        .flatten()
-        .fold(Int::one(), |l, e| lcm(&l, e.scale().denom()));
-    let m: Mat4<ZPoly> = std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            let e = &n[i][j];
-            let factor = (&Rat::from_int(den.clone()) * e.scale()).floor();
+    let entries = || n.iter().flatten().filter(|e| !e.is_zero());
+    let den = entries().fold(Int::one(), |l, e| lcm(&l, e.scale().denom()));
+    let num = entries().fold(Int::zero(), |g, e| g.gcd(e.scale().numer()));
+    let scale = Rat::new(den, num).unwrap_or_else(Rat::one);
+    n.each_ref().map(|row| {
+        row.each_ref().map(|e| {
+            let factor = (&scale * e.scale()).floor();
             e.prim().mul_int(&factor)
         })
-    });
-    let g = m.iter().flatten().fold(ZPoly::zero(), |g, e| g.gcd(e));
-    if g.degree().unwrap_or(0) == 0 && g.content().is_one() {
-        return m;
-    }
-    m.map(|row| row.map(|e| e.div_exact(&g).expect("g divides every entry")))
+    })
 }
 
 fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
@@ -185,15 +219,13 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
 }
 
 /// A placed body: its placement, its body quadric and what is known about
-/// the determinant of the placement.
-#[derive(Clone, Debug, PartialEq)]
+/// the determinant of the placement. The integer matrices are formed on
+/// first use only.
+#[derive(Debug)]
 pub struct PlacedQuadric {
-    /// The homogeneous body → world matrix `M(u)` with integer polynomial
-    /// entries, up to a factor nonzero on the span.
-    pub placement: Mat4<ZPoly>,
-    /// The world → body matrix `N(u) ∝ M(u)⁻¹`, integer polynomial entries,
-    /// up to a factor nonzero on the span.
-    pub inverse: Mat4<ZPoly>,
+    frame: Frame<QPoly>,
+    placement: OnceLock<Mat4<ZPoly>>,
+    inverse: OnceLock<Mat4<ZPoly>>,
     /// The body quadric `diag(D)` (interior `XᵀDX < 0`), scaled to integers.
     pub diagonal: [ZPoly; 4],
     /// Primitive polynomials nonzero on the span such that `det M(u)` is a
@@ -202,10 +234,44 @@ pub struct PlacedQuadric {
 }
 
 impl PlacedQuadric {
+    /// The homogeneous body → world matrix `M(u)` with integer polynomial
+    /// entries, up to a factor nonzero on the span.
+    pub fn placement(&self) -> &Mat4<ZPoly> {
+        self.placement
+            .get_or_init(|| to_integer_matrix(&self.frame.forward()))
+    }
+
+    /// The world → body matrix `N(u) ∝ M(u)⁻¹` with integer polynomial
+    /// entries, up to a factor nonzero on the span.
+    pub fn inverse(&self) -> &Mat4<ZPoly> {
+        self.inverse
+            .get_or_init(|| to_integer_matrix(&self.frame.inverse()))
+    }
+
+    /// Upper bounds `(deg M, deg N)` on the entries' degrees of
+    /// [`PlacedQuadric::placement`] and [`PlacedQuadric::inverse`], without
+    /// forming them: equal for rigid motions (`N` is a transpose), about
+    /// three times higher for `N` under affine ones (`N = adj M`).
+    pub fn degree_bounds(&self) -> (usize, usize) {
+        self.frame.degree_bounds()
+    }
+
     /// The moving quadric `A(u) = N(u)ᵀ·D·N(u)` in world coordinates
     /// (interior `XᵀA(u)X < 0`), up to a factor positive on the span.
     pub fn quadric(&self) -> Mat4<ZPoly> {
-        congruence(&self.inverse, &self.diagonal)
+        congruence(self.inverse(), &self.diagonal)
+    }
+
+    /// The quadric at one parameter `u`, exactly, scaled to integers (a
+    /// positive multiple of `A(u)`), from the placement's values there.
+    pub fn quadric_at(&self, u: &Rat) -> Mat4<Int> {
+        let n = self.frame.map(|p| p.eval_rat(u)).inverse();
+        let den = n
+            .iter()
+            .flatten()
+            .fold(Int::one(), |l, e| lcm(&l, e.denom()));
+        let n = n.map(|row| row.map(|e| (&Rat::from_int(den.clone()) * &e).floor()));
+        congruence(&n, &self.diagonal.each_ref().map(|e| e.coeff(0)))
     }
 }
 
@@ -220,8 +286,9 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
         .filter(|f| f.degree().unwrap_or(0) > 0)
         .collect();
     Ok(PlacedQuadric {
-        placement: to_integer_matrix(&frame.forward()),
-        inverse: to_integer_matrix(&frame.inverse()),
+        frame,
+        placement: OnceLock::new(),
+        inverse: OnceLock::new(),
         diagonal: rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant),
         det_factors,
     })

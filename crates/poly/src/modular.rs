@@ -105,6 +105,35 @@ fn crt_extend(h: &mut [Int], modulus: &mut Int, r: &[u64], f: &Fp) -> bool {
     changed
 }
 
+/// Whether `a` (degree ≥ 1) is proven squarefree by one word prime `p ∤ lc(a)`:
+/// a repeated factor `g²` of `a` over ℚ reduces to one of `a mod p` (of the
+/// same degree), so `gcd(a mod p, a′ mod p) = 1` rules it out. `false`
+/// means "not proven" (a repeated factor, or an unlucky prime).
+pub(crate) fn squarefree_by_prime(a: &ZPoly) -> bool {
+    let Some(lc) = a.leading() else {
+        return false;
+    };
+    let limbs = to_limbs(a.coeffs());
+    let max_limbs = crate::ntt::max_limbs(&limbs, &limbs);
+    let Some(f) = (0..4)
+        .map(|index| Fp::new(ntt_prime(index).p))
+        .find(|f| lc.mod_u64(f.p) != 0)
+    else {
+        return false;
+    };
+    let mut r = vec![0u64; a.coeffs().len()];
+    reduce_all(&limbs, &f, &f.limb_weights(max_limbs), &mut r);
+    let r: Vec<u64> = r.iter().map(|&x| f.enter(x)).collect();
+    // a′ mod p: i·a_i for i ≥ 1 (degree < p, so its top coefficient survives).
+    let d: Vec<u64> = r
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, &x)| f.mul(f.enter(i as u64), x))
+        .collect();
+    gcd_mod_p(r, d, &f).len() == 1
+}
+
 /// `gcd(a, b)` over `Q[t]`, primitive with positive leading coefficient;
 /// see the module documentation for the algorithm and its proof.
 pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
@@ -236,6 +265,20 @@ mod gcd_tests {
         assert_eq!(p.mul_int(&Int::from(-6)).squarefree_part(), &(&a * &b) * &c);
         assert_eq!(z(&[5]).squarefree_part(), ZPoly::one());
         assert_eq!(ZPoly::zero().squarefree_part(), ZPoly::zero());
+    }
+
+    #[test]
+    fn squarefree_proof_by_one_prime() {
+        use super::squarefree_by_prime;
+        let (a, b) = (z(&[-1, 1]), z(&[2, 0, 1]));
+        assert!(squarefree_by_prime(&(&a * &b)));
+        assert!(!squarefree_by_prime(&(&a.pow(2) * &b)));
+        // t² − p0² is squarefree but ≡ t² modulo p0: unproven there, so
+        // another prime decides it (t² − p0² has roots ±p0).
+        let p0 = Int::from_u64(crate::prime::ntt_prime(0).p);
+        let unlucky = ZPoly::new(vec![-(&p0 * &p0), Int::zero(), Int::one()]);
+        assert!(!squarefree_by_prime(&unlucky));
+        assert_eq!(unlucky.squarefree_part(), unlucky);
     }
 
     #[test]

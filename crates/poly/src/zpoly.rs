@@ -418,7 +418,7 @@ impl ZPoly {
     /// The squarefree part `pp(p / gcd(p, p'))`: the product of the distinct
     /// irreducible factors of `p`, primitive with positive leading coefficient.
     pub fn squarefree_part(&self) -> ZPoly {
-        if self.degree().is_none_or(|n| n == 0) {
+        if self.degree().is_none_or(|n| n == 0) || crate::modular::squarefree_by_prime(self) {
             return self.primitive_part();
         }
         let g = self.gcd(&self.derivative());
