@@ -3,7 +3,7 @@
 //! to any width, and able to decide the exact sign of any polynomial at it.
 
 use crate::scaled::ScaledPoly;
-use ccd_arith::{Interval, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
 use std::sync::{Arc, OnceLock};
 
@@ -141,6 +141,42 @@ impl RealRoot {
         self.sign_lo == 0 || self.width() * Rat::from(2) <= old
     }
 
+    /// One exact Newton step, for when `f64` cannot resolve the root any
+    /// further: from a short dyadic `m = a/b` in the middle half of the
+    /// enclosure, `x = m − p(m)/p′(m) = (a·P′ − P)/(b·P′)` with the exact
+    /// homogeneous values `P = bⁿ·p(m)`, `P′ = bⁿ⁻¹·p′(m)`, rounded down to
+    /// `X/2^k` with `2^(−k)` about `max(w², target/4)` for the current width
+    /// `w` (Newton's error is quadratic in `m`'s; one integer division, no
+    /// gcd). The enclosure is then cut at `(X − 1)/2^k` and `(X + 2)/2^k`,
+    /// each cut proven by an exact sign; `false` if the width did not halve.
+    fn exact_newton_jump(&mut self, target: &Rat) -> bool {
+        let w = self.width();
+        let quarter = &w * &Rat::from_frac(1, 4);
+        let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
+        let pm = self.poly.eval_homogeneous(&m);
+        let dpm = self.poly.derivative().eval_homogeneous(&m);
+        if dpm.is_zero() {
+            return false;
+        }
+        // −log2 of a positive rational, rounded up (within one bit).
+        let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
+        let k = neg_log2(&(&w * &w))
+            .min(neg_log2(target) + 2)
+            .max(neg_log2(&w) + 2) as u64;
+        let x_scaled = (m.numer() * &dpm - pm)
+            .shl(k)
+            .div_floor(&(m.denom() * &dpm));
+        let a = Rat::dyadic(&x_scaled - &Int::one(), k);
+        let b = Rat::dyadic(&x_scaled + &Int::from(2), k);
+        if a > self.lo && a < self.hi {
+            self.cut(a);
+        }
+        if self.sign_lo != 0 && b > self.lo && b < self.hi {
+            self.cut(b);
+        }
+        self.sign_lo == 0 || self.width() * Rat::from(2) <= w
+    }
+
     /// Shrinks the enclosure until `hi − lo <= max_width` (or the root turns
     /// out rational). Each step is proven by exact signs of `p`.
     ///
@@ -149,6 +185,8 @@ impl RealRoot {
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
         let mut newton_ok = true;
+        // Bisections left before the next exact Newton attempt.
+        let mut wait = 0u32;
         while self.sign_lo != 0 && self.width() > *max_width {
             if newton_ok {
                 newton_ok = self.newton_jump(max_width);
@@ -156,6 +194,15 @@ impl RealRoot {
                     continue;
                 }
             }
+            // Exact Newton once the enclosure is narrow enough for its
+            // quadratic regime to be likely (`2^(−10)` of the span).
+            if wait == 0 && self.width() <= Rat::dyadic(Int::one(), 10) {
+                if self.exact_newton_jump(max_width) {
+                    continue;
+                }
+                wait = 4;
+            }
+            wait = wait.saturating_sub(1);
             self.bisect();
         }
         if self.sign_lo != 0 {
