@@ -123,6 +123,15 @@ impl Int {
     pub fn gcd(&self, other: &Int) -> Int {
         Int(k::gcd(&self.0, &other.0))
     }
+    /// Least common multiple of two positive integers (common denominators).
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// assert_eq!(Int::from(4).lcm(&Int::from(6)), Int::from(12));
+    /// ```
+    pub fn lcm(&self, other: &Int) -> Int {
+        self.div_exact(&self.gcd(other)) * other
+    }
     /// `self · 2^s`.
     #[inline]
     pub fn shl(&self, s: u64) -> Int {

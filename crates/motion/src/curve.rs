@@ -5,33 +5,27 @@ use ccd_arith::{Int, Rat};
 use ccd_poly::{QPoly, ZPoly};
 
 /// `Σ Bᵢⁿ(u)·vᵢ` in the power basis: the coefficient of `uʲ` is
-/// `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`, computed on the integers
-/// `L·vᵢ` for the common denominator `L` (no rational arithmetic).
+/// `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`, computed on the integer vector
+/// of [`QPoly::from_rats`] (`vᵢ = s·Pᵢ`; the map is linear, so no rational
+/// arithmetic).
 pub fn bernstein_to_power(values: &[Rat]) -> QPoly {
     let n = values.len().saturating_sub(1);
     let binom = binomials(n);
-    let den = values.iter().fold(Int::one(), |l, v| {
-        let g = l.gcd(v.denom());
-        (&l * v.denom()).div_exact(&g)
-    });
-    let ints: Vec<Int> = values
-        .iter()
-        .map(|v| (v.numer() * &den).div_exact(v.denom()))
-        .collect();
+    let v = QPoly::from_rats(values);
     let coeffs: Vec<Int> = (0..=n)
         .map(|j| {
-            let mut s = Int::zero();
-            for (i, v) in ints.iter().enumerate().take(j + 1) {
-                let term = &binom[j][i] * v;
-                s = if (j - i) % 2 == 0 { s + term } else { s - term };
-            }
+            let s = binom[j].iter().enumerate().fold(Int::zero(), |s, (i, c)| {
+                let term = c * &v.prim().coeff(i);
+                if (j - i) % 2 == 0 {
+                    s + term
+                } else {
+                    s - term
+                }
+            });
             s * &binom[n][j]
         })
         .collect();
-    QPoly::from_parts(
-        Rat::new(Int::one(), den).expect("positive denominator"),
-        ZPoly::new(coeffs),
-    )
+    QPoly::from_parts(v.scale().clone(), ZPoly::new(coeffs))
 }
 
 /// Pascal's triangle up to row `n`.

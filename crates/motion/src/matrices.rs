@@ -192,17 +192,12 @@ fn quaternion_curve(curve: &Bezier<Quat>) -> [QPoly; 4] {
     })
 }
 
-/// Lowest common multiple of positive integers.
-fn lcm(a: &Int, b: &Int) -> Int {
-    (a * b).div_exact(&a.gcd(b)).abs()
-}
-
 /// The matrix over ℚ[u] times the positive rational that makes its entries
 /// integer polynomials with no common integer factor (a constant factor
 /// `c` of a placement would rescale λ by `c²` and grow every coefficient).
 fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
     let entries = || n.iter().flatten().filter(|e| !e.is_zero());
-    let den = entries().fold(Int::one(), |l, e| lcm(&l, e.scale().denom()));
+    let den = entries().fold(Int::one(), |l, e| l.lcm(e.scale().denom()));
     let num = entries().fold(Int::zero(), |g, e| g.gcd(e.scale().numer()));
     let scale = Rat::new(den, num).unwrap_or_else(Rat::one);
     n.each_ref().map(|row| {
@@ -214,7 +209,7 @@ fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
 }
 
 fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
-    let den = v.iter().fold(Int::one(), |l, r| lcm(&l, r.denom()));
+    let den = v.iter().fold(Int::one(), |l, r| l.lcm(r.denom()));
     std::array::from_fn(|i| (&Rat::from_int(den.clone()) * &v[i]).floor())
 }
 
@@ -266,11 +261,10 @@ impl PlacedQuadric {
     /// positive multiple of `A(u)`), from the placement's values there.
     pub fn quadric_at(&self, u: &Rat) -> Mat4<Int> {
         let n = self.frame.map(|p| p.eval_rat(u)).inverse();
-        let den = n
-            .iter()
-            .flatten()
-            .fold(Int::one(), |l, e| lcm(&l, e.denom()));
-        let n = n.map(|row| row.map(|e| (&Rat::from_int(den.clone()) * &e).floor()));
+        let flat: [Rat; 16] = std::array::from_fn(|k| n[k / 4][k % 4].clone());
+        let ints = rat_vec_to_int(&flat);
+        let n: Mat4<Int> =
+            std::array::from_fn(|i| std::array::from_fn(|j| ints[4 * i + j].clone()));
         congruence(&n, &self.diagonal.each_ref().map(|e| e.coeff(0)))
     }
 }

@@ -17,7 +17,7 @@
 //! done once per conversion over a common denominator.
 
 use crate::mul::mul_coeffs;
-use crate::zpoly::{hom_horner, lcm, taylor_shift_in_place};
+use crate::zpoly::{hom_horner, taylor_shift_in_place};
 use crate::{QPoly, ZPoly};
 use ccd_arith::{Int, Rat};
 
@@ -80,7 +80,7 @@ fn divide_binomials(c: Vec<Int>) -> (Vec<Int>, Rat) {
         } else {
             (num, den)
         };
-        l = lcm(&l, &den);
+        l = l.lcm(&den);
         parts.push((num, den));
     }
     let beta = parts

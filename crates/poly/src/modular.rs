@@ -105,6 +105,13 @@ fn crt_extend(h: &mut [Int], modulus: &mut Int, r: &[u64], f: &Fp) -> bool {
     changed
 }
 
+/// The coefficients (as limbs) modulo `f.p`, in Montgomery form.
+fn image(limbs: &[(bool, Vec<u64>)], f: &Fp, weights: &[u64]) -> Vec<u64> {
+    let mut r = vec![0u64; limbs.len()];
+    reduce_all(limbs, f, weights, &mut r);
+    r.into_iter().map(|x| f.enter(x)).collect()
+}
+
 /// Whether `a` (degree ≥ 1) is proven squarefree by one word prime `p ∤ lc(a)`:
 /// a repeated factor `g²` of `a` over ℚ reduces to one of `a mod p` (of the
 /// same degree), so `gcd(a mod p, a′ mod p) = 1` rules it out. `false`
@@ -114,16 +121,17 @@ pub(crate) fn squarefree_by_prime(a: &ZPoly) -> bool {
         return false;
     };
     let limbs = to_limbs(a.coeffs());
-    let max_limbs = crate::ntt::max_limbs(&limbs, &limbs);
     let Some(f) = (0..4)
         .map(|index| Fp::new(ntt_prime(index).p))
         .find(|f| lc.mod_u64(f.p) != 0)
     else {
         return false;
     };
-    let mut r = vec![0u64; a.coeffs().len()];
-    reduce_all(&limbs, &f, &f.limb_weights(max_limbs), &mut r);
-    let r: Vec<u64> = r.iter().map(|&x| f.enter(x)).collect();
+    let r = image(
+        &limbs,
+        &f,
+        &f.limb_weights(crate::ntt::max_limbs(&limbs, &[])),
+    );
     // a′ mod p: i·a_i for i ≥ 1 (degree < p, so its top coefficient survives).
     let d: Vec<u64> = r
         .iter()
@@ -152,7 +160,6 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     let gamma = lca.gcd(lcb);
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
-    let (mut ra, mut rb) = (vec![0u64; da + 1], vec![0u64; db + 1]);
     // The current reconstruction: its degree, coefficients and modulus.
     let mut best: Option<(usize, Vec<Int>, Int)> = None;
     for index in 0.. {
@@ -161,10 +168,7 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
             continue;
         }
         let weights = f.limb_weights(max_limbs);
-        reduce_all(&sa, &f, &weights, &mut ra);
-        reduce_all(&sb, &f, &weights, &mut rb);
-        let enter = |v: &[u64]| v.iter().map(|&x| f.enter(x)).collect::<Vec<_>>();
-        let g = gcd_mod_p(enter(&ra), enter(&rb), &f);
+        let g = gcd_mod_p(image(&sa, &f, &weights), image(&sb, &f, &weights), &f);
         let d = g.len() - 1;
         if d == 0 {
             return ZPoly::one();

@@ -1,7 +1,7 @@
 //! [`QPoly`]: polynomials over `Q` as one rational times a primitive
 //! integer polynomial.
 
-use crate::zpoly::{forward_binops, lcm};
+use crate::zpoly::forward_binops;
 use crate::ZPoly;
 use ccd_arith::{Int, Rat, Ring};
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -55,7 +55,7 @@ impl QPoly {
     /// From rational coefficients, constant term first: over the common
     /// denominator `L = lcm(den c_i)`, `Σ c_i t^i = (1/L)·Σ (c_i L) t^i`.
     pub fn from_rats(c: &[Rat]) -> QPoly {
-        let l = c.iter().fold(Int::one(), |l, x| lcm(&l, x.denom()));
+        let l = c.iter().fold(Int::one(), |l, x| l.lcm(x.denom()));
         let ints = c
             .iter()
             .map(|x| x.numer() * &l.div_exact(x.denom()))
@@ -231,7 +231,7 @@ impl Add<&QPoly> for &QPoly {
             o.scale.denom(),
         );
         let g = na.gcd(nb);
-        let d = lcm(da, db);
+        let d = da.lcm(db);
         let fa = na.div_exact(&g) * d.div_exact(da);
         let fb = nb.div_exact(&g) * d.div_exact(db);
         let sum = &self.prim.mul_int(&fa) + &o.prim.mul_int(&fb);

@@ -110,12 +110,6 @@ pub(crate) fn content_of(c: &[Int]) -> Int {
     g
 }
 
-/// `lcm(a, b)` for positive integers.
-pub(crate) fn lcm(a: &Int, b: &Int) -> Int {
-    let g = a.gcd(b);
-    a.div_exact(&g) * b
-}
-
 impl ZPoly {
     /// The polynomial with the given coefficients (`coeffs[i]` of `t^i`);
     /// trailing zeros are dropped.
@@ -381,7 +375,7 @@ impl ZPoly {
         let Some(n) = self.degree() else {
             return ZPoly::zero();
         };
-        let d = lcm(a.denom(), b.denom());
+        let d = a.denom().lcm(b.denom());
         let alpha = a.numer() * &d.div_exact(a.denom());
         let beta = b.numer() * &d.div_exact(b.denom());
         let mut v = self.c.clone();

@@ -42,49 +42,57 @@ pub fn norm2<R: RingOps>(q: &[R; 4]) -> R {
     q.iter().fold(R::zero(), |acc, c| acc.plus(&c.times(c)))
 }
 
+/// The homogeneous matrix `[[x, col], [0, corner]]`.
+fn block<R: RingOps>(x: Mat3<R>, col: [R; 3], corner: R) -> Mat4<R> {
+    let row = |i: usize| -> [R; 4] {
+        if i < 3 {
+            let [a, b, c] = x[i].clone();
+            [a, b, c, col[i].clone()]
+        } else {
+            [R::zero(), R::zero(), R::zero(), corner.clone()]
+        }
+    };
+    std::array::from_fn(row)
+}
+
+/// `s·x` entrywise.
+fn scaled<R: RingOps>(s: &R, x: &Mat3<R>) -> Mat3<R> {
+    x.each_ref().map(|row| row.each_ref().map(|e| s.times(e)))
+}
+
+/// `−x·v`.
+fn minus_times<R: RingOps>(x: &Mat3<R>, v: &[R; 3]) -> [R; 3] {
+    x.each_ref().map(|row| {
+        row.iter()
+            .zip(v)
+            .fold(R::zero(), |t, (a, b)| t.plus(&a.times(b)))
+            .negated()
+    })
+}
+
 /// Inverse of the rigid placement `X = R·Xbody + C/w` with `R = M/n`
 /// (`n = |q|² > 0`, `w > 0`): `[[Rᵀ, −Rᵀc], [0, 1]]` times the positive
 /// factor `w·n`, i.e. `[[w·Mᵀ, −Mᵀ·C], [0, w·n]]`.
 pub fn rigid_inverse<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
-    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    for i in 0..3 {
-        let mut t = R::zero();
-        for j in 0..3 {
-            // (Mᵀ)[i][j] = M[j][i]
-            out[i][j] = w.times(&m[j][i]);
-            t = t.plus(&m[j][i].times(&center[j]));
-        }
-        out[i][3] = t.negated();
-    }
-    out[3][3] = w.times(n);
-    out
+    let mt: Mat3<R> = std::array::from_fn(|i| std::array::from_fn(|j| m[j][i].clone()));
+    block(scaled(w, &mt), minus_times(&mt, center), w.times(n))
 }
 
 /// The rigid placement `X = R·Xbody + C/w` with `R = M/n` itself, as a
 /// homogeneous matrix times the factor `n·w` (nonzero): `[[w·M, n·C], [0, n·w]]`.
 /// Its determinant is `n⁴·w⁴` (`det M = n³`).
 pub fn rigid_placement<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
-    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    for i in 0..3 {
-        for j in 0..3 {
-            out[i][j] = w.times(&m[i][j]);
-        }
-        out[i][3] = n.times(&center[i]);
-    }
-    out[3][3] = n.times(w);
-    out
+    block(
+        scaled(w, m),
+        center.each_ref().map(|c| n.times(c)),
+        n.times(w),
+    )
 }
 
 /// The affine placement `X = (L·Xbody + d)/w` as the homogeneous matrix
 /// `[[L, d], [0, w]]` (determinant `w·det L`).
 pub fn affine_placement<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
-    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    for i in 0..3 {
-        out[i][..3].clone_from_slice(&l[i]);
-        out[i][3] = d[i].clone();
-    }
-    out[3][3] = w.clone();
-    out
+    block(l.clone(), d.clone(), w.clone())
 }
 
 /// Inverse of the affine placement `X = (L·Xbody + d)/w` up to the nonzero
@@ -92,17 +100,7 @@ pub fn affine_placement<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
 /// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
 pub fn affine_inverse<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
     let adj = adj3(l);
-    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    for i in 0..3 {
-        let mut t = R::zero();
-        for j in 0..3 {
-            out[i][j] = w.times(&adj[i][j]);
-            t = t.plus(&adj[i][j].times(&d[j]));
-        }
-        out[i][3] = t.negated();
-    }
-    out[3][3] = det3(l);
-    out
+    block(scaled(w, &adj), minus_times(&adj, d), det3(l))
 }
 
 /// The body quadric `diag(1/r0², 1/r1², 1/r2², −1)` times the positive

@@ -19,6 +19,8 @@ pub struct RealRoot {
     /// Sign of `p(lo)`; 0 when the root is exact.
     sign_lo: i32,
     approx: Arc<OnceLock<ScaledPoly>>,
+    /// `p′`, for exact Newton steps (formed on first use).
+    derivative: Arc<OnceLock<ZPoly>>,
 }
 
 impl RealRoot {
@@ -29,6 +31,7 @@ impl RealRoot {
             hi: at,
             sign_lo: 0,
             approx: Arc::default(),
+            derivative: Arc::default(),
         }
     }
 
@@ -40,6 +43,7 @@ impl RealRoot {
             hi,
             sign_lo,
             approx: Arc::default(),
+            derivative: Arc::default(),
         }
     }
 
@@ -130,13 +134,17 @@ impl RealRoot {
             return false;
         };
         // The shortest dyadics near x ∓ eps: cheaper exact evaluations.
-        let (a, b) = (Rat::dyadic_in(&a0, &a1), Rat::dyadic_in(&b0, &b1));
+        self.cut_both(Rat::dyadic_in(&a0, &a1), Rat::dyadic_in(&b0, &b1))
+    }
+
+    /// Cuts at `a` and at `b` (each only if strictly inside); whether that
+    /// made the root exact or at least halved the enclosure.
+    fn cut_both(&mut self, a: Rat, b: Rat) -> bool {
         let old = self.width();
-        if a > self.lo && a < self.hi {
-            self.cut(a);
-        }
-        if b > self.lo && b < self.hi {
-            self.cut(b);
+        for x in [a, b] {
+            if x > self.lo && x < self.hi {
+                self.cut(x);
+            }
         }
         self.sign_lo == 0 || self.width() * Rat::from(2) <= old
     }
@@ -154,7 +162,10 @@ impl RealRoot {
         let quarter = &w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let pm = self.poly.eval_homogeneous(&m);
-        let dpm = self.poly.derivative().eval_homogeneous(&m);
+        let dpm = self
+            .derivative
+            .get_or_init(|| self.poly.derivative())
+            .eval_homogeneous(&m);
         if dpm.is_zero() {
             return false;
         }
@@ -166,15 +177,10 @@ impl RealRoot {
         let x_scaled = (m.numer() * &dpm - pm)
             .shl(k)
             .div_floor(&(m.denom() * &dpm));
-        let a = Rat::dyadic(&x_scaled - &Int::one(), k);
-        let b = Rat::dyadic(&x_scaled + &Int::from(2), k);
-        if a > self.lo && a < self.hi {
-            self.cut(a);
-        }
-        if self.sign_lo != 0 && b > self.lo && b < self.hi {
-            self.cut(b);
-        }
-        self.sign_lo == 0 || self.width() * Rat::from(2) <= w
+        self.cut_both(
+            Rat::dyadic(&x_scaled - &Int::one(), k),
+            Rat::dyadic(&x_scaled + &Int::from(2), k),
+        )
     }
 
     /// Shrinks the enclosure until `hi − lo <= max_width` (or the root turns
