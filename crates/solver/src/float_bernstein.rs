@@ -1,11 +1,25 @@
-//! The certified filter: Bernstein coefficients as outward-rounded `f64`
-//! intervals, subdivided by de Casteljau's algorithm in interval arithmetic.
+//! The certified filter: Bernstein coefficients in `f64` with one running
+//! error bound, subdivided by de Casteljau's algorithm in plain `f64`.
 //!
 //! The exact integer coefficients are scaled by one common power of two so
-//! that the largest fits comfortably in `f64`; a coefficient whose interval
-//! contains zero has an undecided sign, and the caller falls back to exact
-//! integers for that node. The intervals are enclosures of the exact scaled
-//! coefficients, so every sign this module reports is proven.
+//! that the largest fits comfortably in `f64`. A node holds approximations
+//! `b̃_i` and one bound `e ≥ max_i |b̃_i − b_i|` on their distance to the
+//! exact scaled coefficients `b_i`; a coefficient with `|b̃_i| ≤ e` has an
+//! undecided sign, and the caller falls back to exact integers for that node.
+//! Every sign this module reports is proven.
+//!
+//! **The bound of a split.** One de Casteljau level computes
+//! `c̃ = fl(x̃ + ỹ)·½` (halving is exact above the subnormal range), so
+//! `|c̃ − c| ≤ E + u·(|x̃| + |ỹ|)/2 + 2^(−1075)` when the operands are within
+//! `E` of their exact values; the computed values never exceed the node's
+//! largest `M` by more than a factor `(1 + u)` per level. After the `n`
+//! levels of a split every child coefficient is within
+//! `e + n·u·M·(1 + u)ⁿ + n·2^(−1074)` of its exact value, `u = 2^(−53)`;
+//! [`FloatBernstein::split_half`] rounds that up generously to
+//! `e + n·M·2^(−51) + n·2^(−1022)`. One bound per node instead of an
+//! interval per coefficient makes the split two `f64` operations per step
+//! (no directed rounding), at the price of a slightly wider bound for the
+//! node's smallest coefficients.
 
 use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
@@ -13,19 +27,43 @@ use ccd_poly::ZPoly;
 /// Largest bit length kept in front of the binary point after scaling.
 const TARGET_BITS: i64 = 900;
 
-/// A node's Bernstein coefficients as interval enclosures (the exact values
-/// times one positive factor).
+/// A node's Bernstein coefficients (the exact values times one positive
+/// factor) as `f64` approximations within a common error bound.
 #[derive(Clone, Debug)]
 pub(crate) struct FloatBernstein {
-    pub(crate) coeffs: Vec<Interval>,
+    coeffs: Vec<f64>,
+    /// `max_i |coeffs[i] − exact_i|`.
+    err: f64,
+    /// The first (last) coefficient is known to be exactly zero: the node's
+    /// end is an exact root of the polynomial.
+    zero_ends: [bool; 2],
 }
 
 impl FloatBernstein {
+    /// From interval enclosures of the exact (scaled) coefficients: their
+    /// midpoints and the largest distance to an end.
+    fn from_intervals(iv: &[Interval]) -> FloatBernstein {
+        let mut err = 0.0f64;
+        let coeffs = iv
+            .iter()
+            .map(|i| {
+                let m = i.mid();
+                err = err.max((i.hi - m).max(m - i.lo));
+                m
+            })
+            .collect();
+        FloatBernstein {
+            coeffs,
+            err: if err > 0.0 { err.next_up() } else { 0.0 },
+            zero_ends: [false; 2],
+        }
+    }
+
     /// Encloses `sign · coeffs` scaled by a common power of two.
     pub(crate) fn from_exact(coeffs: &[Int], sign: i32) -> FloatBernstein {
         let max_bits = coeffs.iter().map(Int::bits).max().unwrap_or(0) as i64;
         let shift = (max_bits - TARGET_BITS).max(0);
-        let coeffs = coeffs
+        let iv: Vec<Interval> = coeffs
             .iter()
             .map(|c| {
                 let i = Interval::from_int_scaled(c, shift);
@@ -36,7 +74,7 @@ impl FloatBernstein {
                 }
             })
             .collect();
-        FloatBernstein { coeffs }
+        FloatBernstein::from_intervals(&iv)
     }
 
     /// Encloses the Bernstein coefficients of `p` over `[lo, hi]` (times a
@@ -61,40 +99,81 @@ impl FloatBernstein {
         let max_bits = c.max_bits() as i64;
         let shift = (max_bits - TARGET_BITS).max(0);
         let mut binom = Int::one();
-        let mut coeffs = Vec::with_capacity(n + 1);
+        let mut iv = Vec::with_capacity(n + 1);
         for (i, ci) in c.coeffs().iter().enumerate() {
-            coeffs.push(
-                Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&binom)),
-            );
+            iv.push(Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&binom)));
             binom = (&binom * &Int::from((n - i) as i64)).div_exact(&Int::from((i + 1) as i64));
         }
-        let fb = FloatBernstein { coeffs };
+        let fb = FloatBernstein::from_intervals(&iv);
         fb.signs().map(|_| fb)
+    }
+
+    /// The certified sign of coefficient `i` (`None` if undecided).
+    pub(crate) fn sign(&self, i: usize) -> Option<i32> {
+        let last = self.coeffs.len() - 1;
+        if (i == 0 && self.zero_ends[0]) || (i == last && self.zero_ends[1]) {
+            return Some(0);
+        }
+        let b = self.coeffs[i];
+        if b > self.err {
+            Some(1)
+        } else if b < -self.err {
+            Some(-1)
+        } else if b == 0.0 && self.err == 0.0 {
+            Some(0)
+        } else {
+            None
+        }
     }
 
     /// The certified sign of every coefficient, or `None` if one is undecided.
     pub(crate) fn signs(&self) -> Option<Vec<i32>> {
-        self.coeffs.iter().map(Interval::sign).collect()
+        (0..self.coeffs.len()).map(|i| self.sign(i)).collect()
     }
 
-    /// De Casteljau at `1/2`: the coefficients over the two halves.
+    /// The certified sign at the node's right end (its last coefficient).
+    pub(crate) fn sign_at_hi(&self) -> Option<i32> {
+        self.sign(self.coeffs.len() - 1)
+    }
+
+    /// Marks the left (`at_hi = false`) or right end as an exact root.
+    pub(crate) fn set_end_zero(&mut self, at_hi: bool) {
+        let i = if at_hi { self.coeffs.len() - 1 } else { 0 };
+        self.coeffs[i] = 0.0;
+        self.zero_ends[at_hi as usize] = true;
+    }
+
+    /// De Casteljau at `1/2`: the coefficients over the two halves, with the
+    /// error bound of the module documentation.
     pub(crate) fn split_half(&self) -> (FloatBernstein, FloatBernstein) {
         let n = self.coeffs.len() - 1;
+        let big = self.coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let nf = n as f64;
+        let err = if n == 0 {
+            self.err
+        } else {
+            (self.err + nf * big * f64::powi(2.0, -51) + nf * f64::MIN_POSITIVE).next_up()
+        };
         let mut b = self.coeffs.clone();
         let mut left = Vec::with_capacity(n + 1);
-        let mut right = vec![Interval::point(0.0); n + 1];
+        let mut right = vec![0.0; n + 1];
         left.push(b[0]);
         right[n] = b[n];
         for k in 1..=n {
             for i in 0..=n - k {
-                b[i] = b[i].average(b[i + 1]);
+                b[i] = (b[i] + b[i + 1]) * 0.5;
             }
             left.push(b[0]);
             right[n - k] = b[n - k];
         }
+        let child = |coeffs, zero_ends| FloatBernstein {
+            coeffs,
+            err,
+            zero_ends,
+        };
         (
-            FloatBernstein { coeffs: left },
-            FloatBernstein { coeffs: right },
+            child(left, [self.zero_ends[0], false]),
+            child(right, [false, self.zero_ends[1]]),
         )
     }
 }
@@ -135,13 +214,58 @@ mod tests {
         }
     }
 
+    /// Exact de Casteljau at ½ over the rationals.
+    fn exact_halves(b: &[Rat]) -> (Vec<Rat>, Vec<Rat>) {
+        let n = b.len() - 1;
+        let mut b = b.to_vec();
+        let (mut left, mut right) = (vec![b[0].clone()], vec![b[n].clone()]);
+        for k in 1..=n {
+            for i in 0..=n - k {
+                b[i] = Rat::midpoint(&b[i], &b[i + 1]);
+            }
+            left.push(b[0].clone());
+            right.push(b[n - k].clone());
+        }
+        right.reverse();
+        (left, right)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// The running bound holds along random subdivision paths: every
+        /// approximation is within `err` of the exact coefficient, so every
+        /// sign the filter reports is the exact sign.
+        #[test]
+        fn running_bound_holds_along_subdivision_paths(
+            raw in proptest::collection::vec((-1_000_000_007i64..1_000_000_007, 0u32..300), 2..40),
+            path in proptest::collection::vec(proptest::bool::ANY, 1..10),
+        ) {
+            let ints: Vec<Int> = raw.iter().map(|(m, k)| Int::from(*m).shl(u64::from(*k))).collect();
+            let mut exact: Vec<Rat> = ints.iter().map(|c| Rat::from(c.clone())).collect();
+            let mut fb = FloatBernstein::from_exact(&ints, 1);
+            for right in path {
+                let (l, r) = fb.split_half();
+                let (el, er) = exact_halves(&exact);
+                (fb, exact) = if right { (r, er) } else { (l, el) };
+                let err = Rat::from_f64_exact(fb.err).expect("finite");
+                for (i, (a, e)) in fb.coeffs.iter().zip(&exact).enumerate() {
+                    let a = Rat::from_f64_exact(*a).expect("finite");
+                    proptest::prop_assert!((&a - e).abs() <= err);
+                    if let Some(s) = fb.sign(i) {
+                        proptest::prop_assert_eq!(s, e.signum());
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn huge_coefficients_keep_their_signs() {
         let big = Int::from(7).pow(1000);
         let fb = FloatBernstein::from_exact(&[big.clone(), -big.clone(), Int::from(1)], -1);
-        assert_eq!(fb.coeffs[0].sign(), Some(-1));
-        assert_eq!(fb.coeffs[1].sign(), Some(1));
+        assert_eq!(fb.sign(0), Some(-1));
+        assert_eq!(fb.sign(1), Some(1));
         // 1 vanishes next to 7^1000 after scaling: undecided, never wrong.
-        assert_eq!(fb.coeffs[2].sign(), None);
+        assert_eq!(fb.sign(2), None);
     }
 }

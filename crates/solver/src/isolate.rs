@@ -16,7 +16,7 @@
 
 use crate::float_bernstein::FloatBernstein;
 use crate::root::RealRoot;
-use ccd_arith::{Interval, Rat};
+use ccd_arith::Rat;
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
@@ -91,7 +91,7 @@ impl Node {
         match self.coeffs {
             Coeffs::Float(f) => {
                 let (l, r) = f.split_half();
-                let s = l.coeffs.last().and_then(Interval::sign);
+                let s = l.sign_at_hi();
                 let left = Node {
                     lo: self.lo,
                     hi: mid.clone(),
@@ -119,8 +119,7 @@ impl Node {
     /// Marks the shared endpoint as an exact root in the float form.
     fn set_endpoint_zero(&mut self, at_hi: bool) {
         if let Coeffs::Float(f) = &mut self.coeffs {
-            let i = if at_hi { f.coeffs.len() - 1 } else { 0 };
-            f.coeffs[i] = Interval::point(0.0);
+            f.set_end_zero(at_hi);
         }
     }
 }
