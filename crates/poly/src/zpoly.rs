@@ -326,6 +326,27 @@ impl ZPoly {
     pub fn eval_homogeneous(&self, x: &Rat) -> Int {
         hom_horner(&self.c, x.numer(), x.denom())
     }
+    /// Whether `x` passes the rational root theorem for `p = Σ cᵢ tⁱ`: a
+    /// root `a/b` in lowest terms has `b | c_n` and `a | c_0`. `false` proves
+    /// `p(x) ≠ 0` with two divisibility tests instead of an evaluation.
+    ///
+    /// ```
+    /// use ccd_arith::Rat;
+    /// use ccd_poly::ZPoly;
+    /// let p = ZPoly::from_i64s(&[-2, 3]); // 3t − 2
+    /// assert!(p.admits_rational_root(&Rat::from_frac(2, 3)));
+    /// assert!(!p.admits_rational_root(&Rat::from_frac(1, 2)));
+    /// assert!(!p.admits_rational_root(&Rat::zero()));
+    /// ```
+    pub fn admits_rational_root(&self, x: &Rat) -> bool {
+        let (Some(first), Some(last)) = (self.c.first(), self.c.last()) else {
+            return true;
+        };
+        if x.numer().is_zero() {
+            return first.is_zero();
+        }
+        last.is_divisible_by(x.denom()) && (first.is_zero() || first.is_divisible_by(x.numer()))
+    }
     /// The exact sign of `p(x)`: the sign of the integer `Σ c_i a^i b^(n−i)`
     /// for `x = a/b`, `b > 0` (no gcds, no rationals).
     pub fn sign_at(&self, x: &Rat) -> i32 {
@@ -703,6 +724,18 @@ mod tests {
             let mut xn = Rat::one();
             for _ in 0..n { xn = &xn * &x; }
             prop_assert_eq!(p.reverse().eval_rat(&x), &xn * &p.eval_rat(&(Rat::one() / &x)));
+        }
+
+        /// The rational root theorem filter never rejects a root, and a
+        /// rejection always means a nonzero value.
+        #[test]
+        fn rational_root_filter_is_sound(q in zpoly(6, 40), a in -50i64..50, b in 1i64..50) {
+            let x = Rat::from_frac(a, b);
+            let root = ZPoly::from_i64s(&[-a, b]) * q.clone();
+            prop_assert!(q.is_zero() || root.admits_rational_root(&x));
+            if !q.admits_rational_root(&x) {
+                prop_assert!(q.sign_at(&x) != 0);
+            }
         }
     }
 }

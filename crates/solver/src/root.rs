@@ -213,7 +213,11 @@ impl RealRoot {
         }
         if self.sign_lo != 0 {
             let s = Rat::simplest_in(&self.lo, &self.hi);
-            if s != self.lo && s != self.hi && self.poly.sign_at(&s) == 0 {
+            if s != self.lo
+                && s != self.hi
+                && self.poly.admits_rational_root(&s)
+                && self.poly.sign_at(&s) == 0
+            {
                 self.lo = s.clone();
                 self.hi = s;
                 self.sign_lo = 0;
