@@ -109,8 +109,8 @@ pub(crate) fn to_i64(a: &Inner) -> Option<i64> {
     a.to_i64()
 }
 #[inline]
-pub(crate) fn low_u64_of_abs(a: &Inner) -> u64 {
-    a.as_limbs().first().map_or(0, |&l| l)
+pub(crate) fn u64_digit_of_abs(a: &Inner, i: usize) -> u64 {
+    a.as_limbs().get(i).map_or(0, |&l| l)
 }
 #[inline]
 pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {

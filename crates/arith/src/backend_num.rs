@@ -108,8 +108,8 @@ pub(crate) fn to_i64(a: &Inner) -> Option<i64> {
     a.to_i64()
 }
 #[inline]
-pub(crate) fn low_u64_of_abs(a: &Inner) -> u64 {
-    a.magnitude().iter_u64_digits().next().unwrap_or(0)
+pub(crate) fn u64_digit_of_abs(a: &Inner, i: usize) -> u64 {
+    a.magnitude().iter_u64_digits().nth(i).unwrap_or(0)
 }
 #[inline]
 pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {

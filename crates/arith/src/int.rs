@@ -187,10 +187,16 @@ impl Int {
     pub fn top_bits(&self) -> (u64, u64) {
         let b = self.bits();
         if b <= 64 {
-            (k::low_u64_of_abs(&self.0), 0)
+            (k::u64_digit_of_abs(&self.0, 0), 0)
         } else {
+            // ⌊|self|/2^e⌋ straight from the two 64-bit digits holding it.
             let e = b - 64;
-            (k::low_u64_of_abs(&k::shr_floor(&k::abs(&self.0), e)), e)
+            let (idx, off) = ((e / 64) as usize, e % 64);
+            let mut m = k::u64_digit_of_abs(&self.0, idx) >> off;
+            if off > 0 {
+                m |= k::u64_digit_of_abs(&self.0, idx + 1) << (64 - off);
+            }
+            (m, e)
         }
     }
     /// A nearest-ish `f64` (not certified; see [`crate::Interval::from_int`]).
