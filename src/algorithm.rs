@@ -8,7 +8,7 @@ use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
-use ccd_solver::RealRoot;
+use ccd_solver::{RealRoot, SignProbe};
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
@@ -61,10 +61,39 @@ fn invariants(f: &CharPoly) -> QuarticInvariants<ZPoly> {
     closed_forms(&f.coeffs)
 }
 
+/// The `sr` polynomials prepared for exact signs at algebraic instants, each
+/// [`SignProbe`] built on first use and shared by every candidate root.
+struct Probes<'a> {
+    inv: &'a QuarticInvariants<ZPoly>,
+    built: Vec<(Quantity, SignProbe)>,
+}
+
+impl<'a> Probes<'a> {
+    fn new(inv: &'a QuarticInvariants<ZPoly>) -> Probes<'a> {
+        Probes { inv, built: vec![] }
+    }
+
+    /// The exact sign of `q` at `root` (`0` for [`Quantity::Var`], which
+    /// has no polynomial).
+    fn sign(&mut self, q: Quantity, root: &mut RealRoot) -> i32 {
+        let Some(poly) = self.inv.get(q) else {
+            return 0;
+        };
+        let i = match self.built.iter().position(|(k, _)| *k == q) {
+            Some(i) => i,
+            None => {
+                self.built.push((q, SignProbe::new(poly)));
+                self.built.len() - 1
+            }
+        };
+        root.sign_with(&self.built[i].1)
+    }
+}
+
 /// Is the configuration at the algebraic instant `root` an external touch?
 /// Theorem 3.10(2), with the signs decided exactly at the root; `zero` lists
 /// quantities known to vanish there (the polynomial the root came from).
-fn touches_at(root: &mut RealRoot, inv: &QuarticInvariants<ZPoly>, zero: &[Quantity]) -> bool {
+fn touches_at(root: &mut RealRoot, probes: &mut Probes, zero: &[Quantity]) -> bool {
     struct NotTouch;
     let answer = classify_with(|q| {
         if zero.contains(&q) {
@@ -73,7 +102,7 @@ fn touches_at(root: &mut RealRoot, inv: &QuarticInvariants<ZPoly>, zero: &[Quant
         match q {
             // Var is read only on the way to "separate": not a touch.
             Quantity::Var => Err(NotTouch),
-            other => Ok(inv.get(other).map_or(0, |p| root.sign_of(p))),
+            other => Ok(probes.sign(other, root)),
         }
     });
     matches!(answer, Ok(Configuration::ExternalTouch))
@@ -191,9 +220,10 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
             stats.deg_candidates = poly.degree();
             let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
                 .map_err(|e| CcdError::Internal(e.to_string()))?;
+            let mut probes = Probes::new(&inv);
             for mut root in roots {
                 stats.candidates += 1;
-                if touches_at(&mut root, &inv, zeros) {
+                if touches_at(&mut root, &mut probes, zeros) {
                     root.refine_to(&width);
                     found.contacts.push(Instant {
                         lo: root.lo().clone(),

@@ -15,7 +15,7 @@
 //! integers, and stays exact while its signs need it.
 
 use crate::float_bernstein::FloatBernstein;
-use crate::root::RealRoot;
+use crate::root::{RealRoot, RootPoly};
 use ccd_arith::Rat;
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
@@ -127,22 +127,23 @@ impl Node {
 /// The real roots of a squarefree polynomial in a closed interval, isolated
 /// lazily in increasing order. Built by [`crate::isolate`].
 pub struct RootIter {
-    poly: Arc<ZPoly>,
+    base: Arc<RootPoly>,
     stack: Vec<Item>,
 }
 
 impl RootIter {
     /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
-    pub(crate) fn new(poly: Arc<ZPoly>, lo: &Rat, hi: &Rat) -> RootIter {
+    pub(crate) fn new(base: Arc<RootPoly>, lo: &Rat, hi: &Rat) -> RootIter {
+        let poly = base.poly();
         let (first, last) = (poly.sign_at(lo), poly.sign_at(hi));
         let mut stack = Vec::new();
         if last == 0 {
-            stack.push(Item::Root(RealRoot::exact(poly.clone(), hi.clone())));
+            stack.push(Item::Root(RealRoot::exact(base.clone(), hi.clone())));
         }
         // The filter straight from the power basis when the ends are not
         // roots; the exact conversion otherwise (or if it cannot sign).
         let float = (first != 0 && last != 0)
-            .then(|| FloatBernstein::from_power(&poly, lo, hi))
+            .then(|| FloatBernstein::from_power(poly, lo, hi))
             .flatten();
         let root = match float {
             Some(f) => Node {
@@ -150,13 +151,13 @@ impl RootIter {
                 hi: hi.clone(),
                 coeffs: Coeffs::Float(f),
             },
-            None => Node::from_exact_bernstein(Bernstein::from_power(&poly, lo, hi)),
+            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi)),
         };
         stack.push(Item::Node(root));
         if first == 0 {
-            stack.push(Item::Root(RealRoot::exact(poly.clone(), lo.clone())));
+            stack.push(Item::Root(RealRoot::exact(base.clone(), lo.clone())));
         }
-        RootIter { poly, stack }
+        RootIter { base, stack }
     }
 }
 
@@ -172,7 +173,7 @@ impl Iterator for RootIter {
             let Some(signs) = node.signs() else {
                 // The filter cannot sign a coefficient: redo this node exactly.
                 self.stack
-                    .push(Item::Node(Node::exact(&self.poly, node.lo, node.hi)));
+                    .push(Item::Node(Node::exact(self.base.poly(), node.lo, node.hi)));
                 continue;
             };
             let var = variations(&signs);
@@ -182,7 +183,7 @@ impl Iterator for RootIter {
             let (first, last) = (signs[0], signs[signs.len() - 1]);
             if var == 1 && first != 0 && last != 0 {
                 return Some(RealRoot::isolated(
-                    self.poly.clone(),
+                    self.base.clone(),
                     node.lo,
                     node.hi,
                     first,
@@ -190,7 +191,7 @@ impl Iterator for RootIter {
             }
             let mid = Rat::midpoint(&node.lo, &node.hi);
             let (mut left, mut right, mid_sign) = node.split();
-            let mid_sign = mid_sign.unwrap_or_else(|| self.poly.sign_at(&mid));
+            let mid_sign = mid_sign.unwrap_or_else(|| self.base.poly().sign_at(&mid));
             if mid_sign == 0 {
                 right.set_endpoint_zero(false);
             }
@@ -198,7 +199,7 @@ impl Iterator for RootIter {
             if mid_sign == 0 {
                 left.set_endpoint_zero(true);
                 self.stack
-                    .push(Item::Root(RealRoot::exact(self.poly.clone(), mid)));
+                    .push(Item::Root(RealRoot::exact(self.base.clone(), mid)));
             }
             self.stack.push(Item::Node(left));
         }

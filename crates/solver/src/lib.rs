@@ -23,11 +23,11 @@ mod root;
 mod scaled;
 
 pub use isolate::RootIter;
-pub use root::RealRoot;
+pub use root::{RealRoot, SignProbe};
+use root::RootPoly;
 
 use ccd_arith::Rat;
 use ccd_poly::ZPoly;
-use std::sync::Arc;
 
 /// Why a polynomial's roots cannot be listed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -53,7 +53,7 @@ pub fn isolate(p: &ZPoly, lo: &Rat, hi: &Rat) -> Result<RootIter, SolverError> {
         return Err(SolverError::EmptyInterval);
     }
     let sf = p.squarefree_part();
-    Ok(RootIter::new(Arc::new(sf), lo, hi))
+    Ok(RootIter::new(RootPoly::new(sf), lo, hi))
 }
 
 /// `true` when `p` has a root in `[lo, hi]` (exactly decided).

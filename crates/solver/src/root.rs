@@ -7,43 +7,90 @@ use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
 use std::sync::{Arc, OnceLock};
 
+/// The squarefree polynomial behind a family of [`RealRoot`]s, with the
+/// views of it that refinement needs, formed once on first use and shared
+/// by every root of the family (all the roots one isolation yields).
+#[derive(Debug)]
+pub(crate) struct RootPoly {
+    poly: ZPoly,
+    /// Its `f64` view, for filtered signs and Newton guesses.
+    approx: OnceLock<ScaledPoly>,
+    /// `p′`, for exact Newton steps.
+    derivative: OnceLock<ZPoly>,
+}
+
+impl RootPoly {
+    pub(crate) fn new(poly: ZPoly) -> Arc<RootPoly> {
+        Arc::new(RootPoly {
+            poly,
+            approx: OnceLock::new(),
+            derivative: OnceLock::new(),
+        })
+    }
+
+    pub(crate) fn poly(&self) -> &ZPoly {
+        &self.poly
+    }
+}
+
+/// A polynomial `q` prepared for exact sign decisions at many roots
+/// ([`RealRoot::sign_with`]): its `f64` view, its exact derivative and the
+/// `f64` view of its second derivative, formed once. Building a probe costs
+/// two exact differentiations and three `f64` conversions; a caller that
+/// asks for the sign of the same `q` at several roots should build it once.
+#[derive(Clone, Debug)]
+pub struct SignProbe {
+    q: ZPoly,
+    sq: ScaledPoly,
+    dq: ZPoly,
+    ddq: ScaledPoly,
+}
+
+impl SignProbe {
+    /// Prepares `q`.
+    pub fn new(q: &ZPoly) -> SignProbe {
+        let sq = ScaledPoly::new(q);
+        let dq = q.derivative();
+        let ddq = ScaledPoly::with_shift(&dq.derivative(), sq.shift());
+        SignProbe {
+            q: q.clone(),
+            sq,
+            dq,
+            ddq,
+        }
+    }
+}
+
 /// A real root `α` of a squarefree `p ∈ ℤ[t]`: either known exactly
 /// (`lo = hi = α`, a rational root) or the only root of `p` in the open
 /// interval `(lo, hi)`, where `p(lo)` and `p(hi)` are nonzero with opposite
 /// signs.
 #[derive(Clone, Debug)]
 pub struct RealRoot {
-    poly: Arc<ZPoly>,
+    base: Arc<RootPoly>,
     lo: Rat,
     hi: Rat,
     /// Sign of `p(lo)`; 0 when the root is exact.
     sign_lo: i32,
-    approx: Arc<OnceLock<ScaledPoly>>,
-    /// `p′`, for exact Newton steps (formed on first use).
-    derivative: Arc<OnceLock<ZPoly>>,
 }
 
 impl RealRoot {
-    pub(crate) fn exact(poly: Arc<ZPoly>, at: Rat) -> RealRoot {
+    pub(crate) fn exact(base: Arc<RootPoly>, at: Rat) -> RealRoot {
         RealRoot {
-            poly,
+            base,
             lo: at.clone(),
             hi: at,
             sign_lo: 0,
-            approx: Arc::default(),
-            derivative: Arc::default(),
         }
     }
 
-    pub(crate) fn isolated(poly: Arc<ZPoly>, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot {
+    pub(crate) fn isolated(base: Arc<RootPoly>, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot {
         debug_assert!(sign_lo != 0 && lo < hi);
         RealRoot {
-            poly,
+            base,
             lo,
             hi,
             sign_lo,
-            approx: Arc::default(),
-            derivative: Arc::default(),
         }
     }
 
@@ -57,7 +104,7 @@ impl RealRoot {
     }
     /// The squarefree polynomial this is a root of.
     pub fn poly(&self) -> &ZPoly {
-        &self.poly
+        &self.base.poly
     }
     /// The rational value when the root is known exactly.
     pub fn exact_value(&self) -> Option<&Rat> {
@@ -73,7 +120,7 @@ impl RealRoot {
     }
 
     fn scaled(&self) -> &ScaledPoly {
-        self.approx.get_or_init(|| ScaledPoly::new(&self.poly))
+        self.base.approx.get_or_init(|| ScaledPoly::new(&self.base.poly))
     }
 
     /// Moves one end to `x` (strictly inside) according to the exact sign of
@@ -96,7 +143,7 @@ impl RealRoot {
     fn sign_of_p_at(&self, x: &Rat) -> i32 {
         match self.scaled().enclose(Interval::from_rat(x)).sign() {
             Some(s) if s != 0 => s,
-            _ => self.poly.sign_at(x),
+            _ => self.base.poly.sign_at(x),
         }
     }
 
@@ -161,10 +208,11 @@ impl RealRoot {
         let w = self.width();
         let quarter = &w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
-        let pm = self.poly.eval_homogeneous(&m);
+        let pm = self.base.poly.eval_homogeneous(&m);
         let dpm = self
+            .base
             .derivative
-            .get_or_init(|| self.poly.derivative())
+            .get_or_init(|| self.base.poly.derivative())
             .eval_homogeneous(&m);
         if dpm.is_zero() {
             return false;
@@ -215,8 +263,8 @@ impl RealRoot {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
                 && s != self.hi
-                && self.poly.admits_rational_root(&s)
-                && self.poly.sign_at(&s) == 0
+                && self.base.poly.admits_rational_root(&s)
+                && self.base.poly.sign_at(&s) == 0
             {
                 self.lo = s.clone();
                 self.hi = s;
@@ -229,7 +277,13 @@ impl RealRoot {
         Interval::from_rat(&self.lo).hull(&Interval::from_rat(&self.hi))
     }
 
-    /// The exact sign (−1, 0, 1) of `q(α)`.
+    /// The exact sign (−1, 0, 1) of `q(α)`; see [`RealRoot::sign_with`],
+    /// which this calls with a fresh [`SignProbe`].
+    pub fn sign_of(&mut self, q: &ZPoly) -> i32 {
+        self.sign_with(&SignProbe::new(q))
+    }
+
+    /// The exact sign (−1, 0, 1) of `q(α)` for a prepared `q`.
     ///
     /// Each round tries, on the isolating interval `I = [lo, hi]`:
     /// 1. the interval enclosure of `q` over `I` (cheap, but limited by
@@ -245,14 +299,12 @@ impl RealRoot {
     /// `I`, and since `g | p` has at most the one root `α` there, that is a
     /// sign change of `g` between the ends. Between rounds the interval is
     /// refined (each step proven by exact signs of `p`).
-    pub fn sign_of(&mut self, q: &ZPoly) -> i32 {
+    pub fn sign_with(&mut self, probe: &SignProbe) -> i32 {
+        let SignProbe { q, sq, dq, ddq } = probe;
         if q.is_zero() {
             return 0;
         }
         let n = q.degree().unwrap_or(0) as i64;
-        let sq = ScaledPoly::new(q);
-        let dq = q.derivative();
-        let ddq = ScaledPoly::with_shift(&dq.derivative(), sq.shift());
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         let mut zero_checked = false;
         for round in 0.. {
@@ -283,7 +335,7 @@ impl RealRoot {
             }
             if !zero_checked && (round >= 1 || qm.contains_zero()) {
                 zero_checked = true;
-                let g = self.poly.gcd(q);
+                let g = self.base.poly.gcd(q);
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
                     return 0;
                 }
