@@ -203,6 +203,49 @@ impl Rat {
     /// (`lo <= hi`): the cheapest point of an interval to evaluate at exactly.
     pub fn dyadic_in(lo: &Rat, hi: &Rat) -> Rat {
         debug_assert!(lo <= hi);
+        match (lo.dyadic_exponent(), hi.dyadic_exponent()) {
+            (Some(kl), Some(kh)) => Rat::dyadic_in_dyadic(lo, kl, hi, kh),
+            _ => Rat::dyadic_in_search(lo, hi),
+        }
+    }
+
+    /// [`Rat::dyadic_in`] for dyadic ends `lo = L/2^kl`, `hi = H/2^kh`: at
+    /// the common level `k`, the multiple of the largest `2^s` in
+    /// `[L·2^(k−kl), H·2^(k−kh)]`, found by shifts only.
+    fn dyadic_in_dyadic(lo: &Rat, kl: u64, hi: &Rat, kh: u64) -> Rat {
+        let k = kl.max(kh);
+        let (l, h) = (lo.num.shl(k - kl), hi.num.shl(k - kh));
+        if l.signum() <= 0 && h.signum() >= 0 {
+            // Zero is inside: the cheapest point of all (as the search picks).
+            return Rat::zero();
+        }
+        // Mirror a negative interval to a positive one.
+        let (l, h, negative) = if h.is_negative() {
+            (-h, -l, true)
+        } else {
+            (l, h, false)
+        };
+        // 0 < l <= h: the largest s with ⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋.
+        let below = &l - &Int::one();
+        let (mut good, mut bad) = (0u64, h.bits() + 1);
+        while bad - good > 1 {
+            let mid = good + (bad - good) / 2;
+            if h.shr_floor(mid) > below.shr_floor(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        if good >= k {
+            // Integers inside: the least one, as the search below picks.
+            return Rat::from_int(-(-&lo.num).shr_floor(kl));
+        }
+        let m = h.shr_floor(good).shl(good);
+        Rat::dyadic(if negative { -m } else { m }, k)
+    }
+
+    /// [`Rat::dyadic_in`] for any rational ends.
+    fn dyadic_in_search(lo: &Rat, hi: &Rat) -> Rat {
         // The smallest m with m/2^k >= lo, if m/2^k <= hi. Having a point at
         // level k implies one at k + 1, so the smallest level is found by
         // bisection below a level that surely has one (2^-k <= hi − lo).
@@ -220,6 +263,9 @@ impl Rat {
             top += 1;
         }
         let mut bottom = 0u64;
+        if lo.num.signum() <= 0 && hi.num.signum() >= 0 {
+            return Rat::zero();
+        }
         if let Some(m) = at_level(0) {
             return Rat::from_int(m);
         }
@@ -546,9 +592,14 @@ mod tests {
         let d = Rat::dyadic_in(&Rat::from_frac(1, 3), &Rat::from_frac(2, 5));
         assert_eq!(d, Rat::from_frac(3, 8));
         assert_eq!(d.dyadic_exponent(), Some(3));
+        // Zero, when inside, is the cheapest point of all.
         assert_eq!(
             Rat::dyadic_in(&Rat::from_frac(-7, 3), &Rat::from(5)),
-            Rat::from(-2)
+            Rat::zero()
+        );
+        assert_eq!(
+            Rat::dyadic_in(&Rat::from_frac(7, 3), &Rat::from(5)),
+            Rat::from(3)
         );
         assert_eq!(Rat::from_frac(1, 3).dyadic_exponent(), None);
         assert_eq!(Rat::from(4).dyadic_exponent(), Some(0));
@@ -565,6 +616,17 @@ mod tests {
         assert_eq!(s((7, 10), (3, 4)), Rat::from_frac(3, 4));
         assert_eq!(s((22, 7), (22, 7)), Rat::from_frac(22, 7));
         assert_eq!(s((314, 100), (315, 100)), Rat::from_frac(22, 7));
+    }
+
+    proptest! {
+        /// The shift-only path for dyadic ends picks the same point as the
+        /// general search.
+        #[test]
+        fn dyadic_in_fast_path_matches_search(a in -100_000i64..100_000, ka in 0u64..40, w in 0i64..100_000, kw in 0u64..40) {
+            let lo = Rat::dyadic(Int::from(a), ka);
+            let hi = &lo + &Rat::dyadic(Int::from(w), kw);
+            prop_assert_eq!(Rat::dyadic_in(&lo, &hi), Rat::dyadic_in_search(&lo, &hi));
+        }
     }
 
     proptest! {

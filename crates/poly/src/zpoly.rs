@@ -30,30 +30,49 @@ fn trim(c: &mut Vec<Int>) {
 /// (`0` for an empty slice). With `y = q > 0` and `x = p` it is
 /// `q^n·f(p/q)` for `f = Σ c_i t^i`, so it carries the exact sign of `f(p/q)`.
 pub(crate) fn hom_horner(c: &[Int], x: &Int, y: &Int) -> Int {
+    hom_horner_impl::<false>(c, x, y).0
+}
+
+/// [`hom_horner`] together with the homogeneous derivative
+/// `Σ_{i≥1} i·c_i x^(i−1) y^(n−i) = y^(n−1)·f′(x/y)`, in one pass and
+/// without forming `f′`: the Horner partial sums `A_i = y^(n−i)·B_i`
+/// (`B_i = Σ_{l≥i} c_l (x/y)^(l−i)`) give `y^(n−1)·f′(x/y) = Σ_{i≥1} A_i x^(i−1)`,
+/// a second Horner run in `x` over them.
+pub(crate) fn hom_horner_with_derivative(c: &[Int], x: &Int, y: &Int) -> (Int, Int) {
+    hom_horner_impl::<true>(c, x, y)
+}
+
+fn hom_horner_impl<const DERIVATIVE: bool>(c: &[Int], x: &Int, y: &Int) -> (Int, Int) {
     let Some((last, rest)) = c.split_last() else {
-        return Int::zero();
+        return (Int::zero(), Int::zero());
     };
     let mut acc = last.clone();
+    let mut dacc = Int::zero();
+    let mut step = |acc: &mut Int, term: Int| {
+        if DERIVATIVE {
+            dacc = &dacc * x + &*acc;
+        }
+        *acc = &*acc * x + term;
+    };
     let k = y.trailing_zeros().unwrap_or(0);
     if y.is_one() {
         for ci in rest.iter().rev() {
-            acc = &acc * x + ci;
+            step(&mut acc, ci.clone());
         }
     } else if y.bits() == k + 1 {
         // y = 2^k (every dyadic point): c_i·y^(n−i) is a shift, so each
         // step costs time linear in the size of the numbers, not a product.
         for (j, ci) in rest.iter().rev().enumerate() {
-            acc = &acc * x + ci.shl(k * (j as u64 + 1));
+            step(&mut acc, ci.shl(k * (j as u64 + 1)));
         }
     } else {
         let mut ypow = Int::one();
         for ci in rest.iter().rev() {
             ypow *= y;
-            acc = &acc * x;
-            acc.add_mul(ci, &ypow);
+            step(&mut acc, ci * &ypow);
         }
     }
-    acc
+    (acc, dacc)
 }
 
 /// Replaces `c` (a coefficient vector, zeros allowed anywhere) by the
@@ -325,6 +344,20 @@ impl ZPoly {
     /// `x = a/2^k` it is `p(x)·2^(k·n)`.
     pub fn eval_homogeneous(&self, x: &Rat) -> Int {
         hom_horner(&self.c, x.numer(), x.denom())
+    }
+    /// `(bⁿ·p(x), bⁿ⁻¹·p′(x))` for `x = a/b`, `n = deg p`: the homogeneous
+    /// value and derivative in one Horner pass, without forming `p′`.
+    ///
+    /// ```
+    /// use ccd_arith::{Int, Rat};
+    /// use ccd_poly::ZPoly;
+    /// let p = ZPoly::from_i64s(&[1, 0, 3]); // 3t² + 1
+    /// let x = Rat::from_frac(1, 2);
+    /// // 4·p(1/2) = 7, 2·p′(1/2) = 2·3 = 6
+    /// assert_eq!(p.eval_homogeneous_with_derivative(&x), (Int::from(7), Int::from(6)));
+    /// ```
+    pub fn eval_homogeneous_with_derivative(&self, x: &Rat) -> (Int, Int) {
+        hom_horner_with_derivative(&self.c, x.numer(), x.denom())
     }
     /// Whether `x` passes the rational root theorem for `p = Σ cᵢ tⁱ`: a
     /// root `a/b` in lowest terms has `b | c_n` and `a | c_0`. `false` proves
@@ -736,6 +769,17 @@ mod tests {
             if !q.admits_rational_root(&x) {
                 prop_assert!(q.sign_at(&x) != 0);
             }
+        }
+
+        /// One pass gives the homogeneous value and the homogeneous value of
+        /// the derivative, at integer, dyadic and general rational points.
+        #[test]
+        fn value_with_derivative_matches_separate_passes(p in zpoly(9, 60), a in -300i64..300, b in 1i64..300, dyadic in proptest::bool::ANY) {
+            let x = if dyadic { Rat::dyadic(Int::from(a), (b % 40) as u64) } else { Rat::from_frac(a, b) };
+            prop_assert_eq!(
+                p.eval_homogeneous_with_derivative(&x),
+                (p.eval_homogeneous(&x), p.derivative().eval_homogeneous(&x))
+            );
         }
     }
 }

@@ -23,8 +23,8 @@ mod root;
 mod scaled;
 
 pub use isolate::RootIter;
-pub use root::{RealRoot, SignProbe};
 use root::RootPoly;
+pub use root::{RealRoot, SignProbe};
 
 use ccd_arith::Rat;
 use ccd_poly::ZPoly;

@@ -15,8 +15,6 @@ pub(crate) struct RootPoly {
     poly: ZPoly,
     /// Its `f64` view, for filtered signs and Newton guesses.
     approx: OnceLock<ScaledPoly>,
-    /// `p′`, for exact Newton steps.
-    derivative: OnceLock<ZPoly>,
 }
 
 impl RootPoly {
@@ -24,7 +22,6 @@ impl RootPoly {
         Arc::new(RootPoly {
             poly,
             approx: OnceLock::new(),
-            derivative: OnceLock::new(),
         })
     }
 
@@ -34,29 +31,21 @@ impl RootPoly {
 }
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
-/// ([`RealRoot::sign_with`]): its `f64` view, its exact derivative and the
-/// `f64` view of its second derivative, formed once. Building a probe costs
-/// two exact differentiations and three `f64` conversions; a caller that
-/// asks for the sign of the same `q` at several roots should build it once.
+/// ([`RealRoot::sign_with`]): with its `f64` view (one conversion of every
+/// coefficient), formed once; a caller that asks for the sign of the same
+/// `q` at several roots should build it once.
 #[derive(Clone, Debug)]
 pub struct SignProbe {
     q: ZPoly,
     sq: ScaledPoly,
-    dq: ZPoly,
-    ddq: ScaledPoly,
 }
 
 impl SignProbe {
     /// Prepares `q`.
     pub fn new(q: &ZPoly) -> SignProbe {
-        let sq = ScaledPoly::new(q);
-        let dq = q.derivative();
-        let ddq = ScaledPoly::with_shift(&dq.derivative(), sq.shift());
         SignProbe {
             q: q.clone(),
-            sq,
-            dq,
-            ddq,
+            sq: ScaledPoly::new(q),
         }
     }
 }
@@ -120,13 +109,14 @@ impl RealRoot {
     }
 
     fn scaled(&self) -> &ScaledPoly {
-        self.base.approx.get_or_init(|| ScaledPoly::new(&self.base.poly))
+        self.base
+            .approx
+            .get_or_init(|| ScaledPoly::new(&self.base.poly))
     }
 
-    /// Moves one end to `x` (strictly inside) according to the exact sign of
-    /// `p(x)`; a zero makes the root exact.
-    fn cut(&mut self, x: Rat) {
-        let s = self.sign_of_p_at(&x);
+    /// Moves one end to `x` (strictly inside) according to `s`, the exact
+    /// sign of `p(x)`; a zero makes the root exact.
+    fn cut(&mut self, x: Rat, s: i32) {
         if s == 0 {
             self.lo = x.clone();
             self.hi = x;
@@ -138,40 +128,59 @@ impl RealRoot {
         }
     }
 
+    /// The sign of `p(x)` when the `f64` enclosure proves it.
+    fn float_sign_of_p_at(&self, x: &Rat) -> Option<i32> {
+        self.scaled()
+            .enclose(Interval::from_rat(x))
+            .sign()
+            .filter(|s| *s != 0)
+    }
+
     /// The sign of `p(x)`: the interval enclosure when it excludes zero,
     /// exact evaluation otherwise.
     fn sign_of_p_at(&self, x: &Rat) -> i32 {
-        match self.scaled().enclose(Interval::from_rat(x)).sign() {
-            Some(s) if s != 0 => s,
-            _ => self.base.poly.sign_at(x),
-        }
+        self.float_sign_of_p_at(x)
+            .unwrap_or_else(|| self.base.poly.sign_at(x))
     }
 
     /// Halves the enclosure (one sign evaluation).
     pub fn bisect(&mut self) {
         if self.sign_lo != 0 {
-            self.cut(self.midpoint());
+            let m = self.midpoint();
+            let s = self.sign_of_p_at(&m);
+            self.cut(m, s);
         }
     }
 
     /// Tries to jump to an enclosure of width about `target` around a float
-    /// Newton estimate, proven by the exact signs at its two ends.
+    /// Newton estimate `x`, the cuts proven by `f64` enclosures of `p`.
+    ///
+    /// The cuts go at `x ∓ eps` with `eps` no smaller than twice the float
+    /// resolution of the root there (the width of the enclosure of `p(x)`
+    /// over `|p′(x)|`): closer cuts could not be signed in `f64`, and exact
+    /// signs this close to the root are [`RealRoot::exact_newton_jump`]'s
+    /// job, which needs two exact evaluations for any number of bits.
     fn newton_jump(&mut self, target: &Rat) -> bool {
         let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
         let sp = self.scaled();
         let mut x = 0.5 * (lo_f + hi_f);
+        let mut slope = 0.0;
         for _ in 0..12 {
             let (v, d) = sp.value_and_slope(x);
             if d == 0.0 || !v.is_finite() || !d.is_finite() {
                 return false;
             }
+            slope = d;
             let nx = (x - v / d).clamp(lo_f, hi_f);
             if nx == x {
                 break;
             }
             x = nx;
         }
-        let eps = (target.to_f64() * 0.25).max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE));
+        let resolution = sp.enclose(Interval::point(x)).width() / slope.abs();
+        let eps = (target.to_f64() * 0.25)
+            .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
+            .max(2.0 * resolution);
         let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
             Rat::from_f64_exact(x - 2.0 * eps),
             Rat::from_f64_exact(x - eps),
@@ -180,40 +189,52 @@ impl RealRoot {
         ) else {
             return false;
         };
-        // The shortest dyadics near x ∓ eps: cheaper exact evaluations.
-        self.cut_both(Rat::dyadic_in(&a0, &a1), Rat::dyadic_in(&b0, &b1))
+        // The shortest dyadics near x ∓ eps.
+        self.cut_both(
+            Rat::dyadic_in(&a0, &a1),
+            Rat::dyadic_in(&b0, &b1),
+            RealRoot::float_sign_of_p_at,
+        )
     }
 
-    /// Cuts at `a` and at `b` (each only if strictly inside); whether that
-    /// made the root exact or at least halved the enclosure.
-    fn cut_both(&mut self, a: Rat, b: Rat) -> bool {
+    /// Cuts at `a` and at `b` (each only if strictly inside and `sign`
+    /// proves the sign of `p` there); whether that made the root exact or at
+    /// least halved the enclosure.
+    fn cut_both(&mut self, a: Rat, b: Rat, sign: impl Fn(&RealRoot, &Rat) -> Option<i32>) -> bool {
         let old = self.width();
         for x in [a, b] {
             if x > self.lo && x < self.hi {
-                self.cut(x);
+                if let Some(s) = sign(self, &x) {
+                    self.cut(x, s);
+                }
             }
         }
         self.sign_lo == 0 || self.width() * Rat::from(2) <= old
     }
 
     /// One exact Newton step, for when `f64` cannot resolve the root any
-    /// further: from a short dyadic `m = a/b` in the middle half of the
-    /// enclosure, `x = m − p(m)/p′(m) = (a·P′ − P)/(b·P′)` with the exact
-    /// homogeneous values `P = bⁿ·p(m)`, `P′ = bⁿ⁻¹·p′(m)`, rounded down to
-    /// `X/2^k` with `2^(−k)` about `max(w², target/4)` for the current width
-    /// `w` (Newton's error is quadratic in `m`'s; one integer division, no
-    /// gcd). The enclosure is then cut at `(X − 1)/2^k` and `(X + 2)/2^k`,
-    /// each cut proven by an exact sign; `false` if the width did not halve.
+    /// further: from a short dyadic `m = a/2^j` in the middle half of the
+    /// enclosure `I`, `x = m − p(m)/p′(m) = (a·P′ − P)/(2^j·P′)` with the
+    /// exact homogeneous values `P = 2^(jn)·p(m)`, `P′ = 2^(j(n−1))·p′(m)`,
+    /// rounded down to `X/2^k` with `2^(−k)` about `max(w², target/4)` for
+    /// the current width `w` (Newton's error is quadratic in `m`'s; one
+    /// integer division, no gcd). The enclosure is then cut at
+    /// `(X − 1)/2^k` and `(X + 2)/2^k`; `false` if the width did not halve.
+    ///
+    /// The sign of `p` at a cut `x` comes from the same two exact values:
+    /// `p(x) = p(m) + p′(m)·D + p″(ξ)·D²/2` with `D = x − m` and `ξ ∈ I`
+    /// (Taylor with Lagrange remainder). The linear part is one exact
+    /// integer, `2^(jn+e)·(p(m) + p′(m)·D) = P·2^e + P′·d·2^j` for
+    /// `D = d/2^e`, and only the remainder is enclosed in `f64` (`p″` over
+    /// `I`, times `D²`); where that does not decide, `p(x)` is evaluated
+    /// exactly.
     fn exact_newton_jump(&mut self, target: &Rat) -> bool {
         let w = self.width();
         let quarter = &w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
-        let pm = self.base.poly.eval_homogeneous(&m);
-        let dpm = self
-            .base
-            .derivative
-            .get_or_init(|| self.base.poly.derivative())
-            .eval_homogeneous(&m);
+        let j = m.dyadic_exponent().expect("dyadic_in is dyadic");
+        let base = self.base.clone();
+        let (pm, dpm) = base.poly.eval_homogeneous_with_derivative(&m);
         if dpm.is_zero() {
             return false;
         }
@@ -222,12 +243,31 @@ impl RealRoot {
         let k = neg_log2(&(&w * &w))
             .min(neg_log2(target) + 2)
             .max(neg_log2(&w) + 2) as u64;
-        let x_scaled = (m.numer() * &dpm - pm)
+        let x_scaled = (m.numer() * &dpm - &pm)
             .shl(k)
             .div_floor(&(m.denom() * &dpm));
+        let sp = self.scaled();
+        let shift = sp.shift();
+        let n = base.poly.degree().unwrap_or(0) as i64;
+        let second = sp.enclose_second_derivative(self.enclosure());
+        let taylor_sign = |root: &RealRoot, x: &Rat| {
+            let d = x - &m;
+            let e = d.dyadic_exponent().expect("dyadics differ by a dyadic");
+            let linear = pm.shl(e) + (&dpm * d.numer()).shl(j);
+            let dd = Interval::from_rat(&d);
+            let value = Interval::from_int_scaled(&linear, j as i64 * n + e as i64 + shift)
+                + second * dd.square() * Interval::point(0.5);
+            Some(
+                value
+                    .sign()
+                    .filter(|s| *s != 0)
+                    .unwrap_or_else(|| root.base.poly.sign_at(x)),
+            )
+        };
         self.cut_both(
             Rat::dyadic(&x_scaled - &Int::one(), k),
             Rat::dyadic(&x_scaled + &Int::from(2), k),
+            taylor_sign,
         )
     }
 
@@ -300,7 +340,7 @@ impl RealRoot {
     /// sign change of `g` between the ends. Between rounds the interval is
     /// refined (each step proven by exact signs of `p`).
     pub fn sign_with(&mut self, probe: &SignProbe) -> i32 {
-        let SignProbe { q, sq, dq, ddq } = probe;
+        let SignProbe { q, sq } = probe;
         if q.is_zero() {
             return 0;
         }
@@ -318,19 +358,17 @@ impl RealRoot {
             let m = Rat::dyadic_in(&self.lo, &self.hi);
             let k = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
             // q(m) = H/2^(k·n) and q'(m) = H'/2^(k·(n−1)), both exact.
-            let qm = Interval::from_int_scaled(&q.eval_homogeneous(&m), sq.shift() + k * n);
-            let dqm = Interval::from_int_scaled(
-                &dq.eval_homogeneous(&m),
-                sq.shift() + k * (n - 1).max(0),
-            );
+            let (qm, dqm) = q.eval_homogeneous_with_derivative(&m);
+            let qm = Interval::from_int_scaled(&qm, sq.shift() + k * n);
+            let dqm = Interval::from_int_scaled(&dqm, sq.shift() + k * (n - 1).max(0));
             // I − m exactly, then enclosed: an f64 interval around α itself
             // could not be narrower than an ulp of α.
             let offset =
                 Interval::from_rat(&(&self.lo - &m)).hull(&Interval::from_rat(&(&self.hi - &m)));
             let half = Interval::point(0.5);
-            if let Some(s) =
-                decided(qm + dqm * offset + ddq.enclose(whole) * offset.square() * half)
-            {
+            if let Some(s) = decided(
+                qm + dqm * offset + sq.enclose_second_derivative(whole) * offset.square() * half,
+            ) {
                 return s;
             }
             if !zero_checked && (round >= 1 || qm.contains_zero()) {

@@ -18,12 +18,7 @@ pub(crate) struct ScaledPoly {
 
 impl ScaledPoly {
     pub(crate) fn new(p: &ZPoly) -> ScaledPoly {
-        ScaledPoly::with_shift(p, (p.max_bits() as i64 - TARGET_BITS).max(0))
-    }
-
-    /// `p · 2^(-shift)` for a given shift (to compare with another scaled
-    /// polynomial, e.g. a derivative).
-    pub(crate) fn with_shift(p: &ZPoly, shift: i64) -> ScaledPoly {
+        let shift = (p.max_bits() as i64 - TARGET_BITS).max(0);
         let coeffs: Vec<Interval> = p
             .coeffs()
             .iter()
@@ -47,6 +42,17 @@ impl ScaledPoly {
         let mut acc = Interval::point(0.0);
         for c in self.coeffs.iter().rev() {
             acc = acc * x + *c;
+        }
+        acc
+    }
+
+    /// A certified enclosure of `{ p″(x)·2^(-shift) : x ∈ X }`, from the
+    /// interval coefficients (`Σ i(i−1)·cᵢ·X^(i−2)`, interval Horner; the
+    /// factors `i(i−1)` are exact in `f64`), with no exact derivative.
+    pub(crate) fn enclose_second_derivative(&self, x: Interval) -> Interval {
+        let mut acc = Interval::point(0.0);
+        for (i, c) in self.coeffs.iter().enumerate().skip(2).rev() {
+            acc = acc * x + *c * Interval::point((i * (i - 1)) as f64);
         }
         acc
     }
