@@ -238,18 +238,32 @@ impl RealRoot {
         if dpm.is_zero() {
             return false;
         }
-        // −log2 of a positive rational, rounded up (within one bit).
-        let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
-        let k = neg_log2(&(&w * &w))
-            .min(neg_log2(target) + 2)
-            .max(neg_log2(&w) + 2) as u64;
-        let x_scaled = (m.numer() * &dpm - &pm)
-            .shl(k)
-            .div_floor(&(m.denom() * &dpm));
         let sp = self.scaled();
         let shift = sp.shift();
         let n = base.poly.degree().unwrap_or(0) as i64;
         let second = sp.enclose_second_derivative(self.enclosure());
+        // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
+        // cut δ from the root has a linear part near |p′|·δ: cuts closer
+        // than `reach` would need exact evaluations, so when the model
+        // reaches well inside the enclosure the cuts go no closer.
+        let slope = Interval::from_int_scaled(&dpm, shift + j as i64 * (n - 1).max(0));
+        let w_f = w.to_f64();
+        let reach =
+            second.lo.abs().max(second.hi.abs()) * w_f * w_f / slope.lo.abs().min(slope.hi.abs());
+        let model_k = if !slope.contains_zero() && reach > 0.0 && reach < w_f / 16.0 {
+            (-reach.log2()).floor() as i64
+        } else {
+            i64::MAX
+        };
+        // −log2 of a positive rational, rounded up (within one bit).
+        let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
+        let k = neg_log2(&(&w * &w))
+            .min(neg_log2(target) + 2)
+            .min(model_k)
+            .max(neg_log2(&w) + 2) as u64;
+        let x_scaled = (m.numer() * &dpm - &pm)
+            .shl(k)
+            .div_floor(&(m.denom() * &dpm));
         let taylor_sign = |root: &RealRoot, x: &Rat| {
             let d = x - &m;
             let e = d.dyadic_exponent().expect("dyadics differ by a dyadic");
