@@ -189,9 +189,11 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
             &float,
         ));
     }
-    let state0 = state_at_start(&a, &b);
     let mut stats = Stats::default();
-    if opts.first_contact_only && state0 != State::Separate {
+    // First contact only: the state at t0 straight from the placements, so
+    // a start that is not separate exits before f(λ; t) is set up.
+    let early = opts.first_contact_only.then(|| state_at_start(&a, &b));
+    if let Some(state0) = early.filter(|s| *s != State::Separate) {
         // Early exit: not separate at t0, nothing else to compute.
         let found = Findings {
             state0,
@@ -203,6 +205,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         return found.into_outcome(&scene.span, stats, |_| Ok(state0));
     }
     let f = CharPoly::from_placed(&a, &b);
+    let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
     let inv = invariants(&f);
     stats.deg_f = f.degree();
     stats.deg_sr0 = inv.sr0.degree();
