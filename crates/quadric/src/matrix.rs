@@ -41,22 +41,23 @@ fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
         .minus(&m[r][j].times(&m[r + 1][i]))
 }
 
+/// Laplace expansion of a 4×4 determinant along its first two rows: the
+/// columns `(i, j)` of each top 2×2 minor, `(k, l)` of the complementary
+/// bottom minor, and whether the permutation `(i j k l)` is even.
+const LAPLACE_PAIRS: [((usize, usize), (usize, usize), bool); 6] = [
+    ((0, 1), (2, 3), true),
+    ((0, 2), (1, 3), false),
+    ((0, 3), (1, 2), true),
+    ((1, 2), (0, 3), true),
+    ((1, 3), (0, 2), false),
+    ((2, 3), (0, 1), true),
+];
+
 /// `det(m)` by Laplace expansion along the first two rows (2×2 minors):
 /// 30 multiplications.
 pub fn det4<R: RingOps>(m: &Mat4<R>) -> R {
-    /// Columns `(i, j)` of the top minor, `(k, l)` of the complementary
-    /// bottom minor, and whether the permutation `(i j k l)` is even.
-    type Pair = ((usize, usize), (usize, usize), bool);
-    const PAIRS: [Pair; 6] = [
-        ((0, 1), (2, 3), true),
-        ((0, 2), (1, 3), false),
-        ((0, 3), (1, 2), true),
-        ((1, 2), (0, 3), true),
-        ((1, 3), (0, 2), false),
-        ((2, 3), (0, 1), true),
-    ];
     let mut det = R::zero();
-    for ((i, j), (k, l), positive) in PAIRS {
+    for ((i, j), (k, l), positive) in LAPLACE_PAIRS {
         let term = minor2(m, 0, i, j).times(&minor2(m, 2, k, l));
         det = if positive {
             det.plus(&term)
@@ -100,32 +101,39 @@ pub fn adj3<R: RingOps>(m: &Mat3<R>) -> Mat3<R> {
 /// The coefficients `[e, a, b, c, d]` (high → low) of the characteristic
 /// quartic `det(λA + B) = e·λ⁴ + a·λ³ + b·λ² + c·λ + d` (Section 2).
 ///
-/// Computed from five determinants at `λ ∈ {0, ±1, ±2}` and exact
-/// interpolation (divisions by small integers only): with `T1 = f(1) + f(−1) − 2f(0) = 2(e + b)`,
-/// `T2 = f(2) + f(−2) − 2f(0) = 32e + 8b`, `U1 = f(1) − f(−1) = 2(a + c)`,
-/// `U2 = f(2) − f(−2) = 16a + 4c`: `e = (T2 − 4T1)/24`, `b = T1/2 − e`,
-/// `a = (U2 − 2U1)/12`, `c = U1/2 − a`. In an exact ring every division is
-/// exact because the coefficients lie in the ring; over floats or intervals
-/// it is an ordinary (enclosing) division.
+/// Laplace expansion along the first two rows with `λ` kept symbolic: each
+/// 2×2 minor of `λA + B` is a quadratic in `λ`,
+/// `λ²·|a a| + λ·(|a b| + |b a|) + |b b|` (eight products), and the
+/// determinant is `Σ ± top(λ)·bottom(λ)` over the six complementary pairs
+/// (nine products each): 150 products, like five determinants at fixed
+/// `λ`, but each product pairs entries of `A` and `B` themselves. When one
+/// body is static its entries are constants, and two thirds of the
+/// products become scalings (O(n) instead of O(n²) for polynomial entries
+/// of length n). No division, so the same code serves every ring.
 pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
-    let at = |lambda: i64| -> R {
-        let l = R::from_i64(lambda);
-        let m: Mat4<R> =
-            std::array::from_fn(|i| std::array::from_fn(|j| l.times(&a[i][j]).plus(&b[i][j])));
-        det4(&m)
+    // The 2×2 minor of rows (r, r + 1), columns (i, j) of λA + B as
+    // [λ², λ, 1] coefficients.
+    let minor = |r: usize, i: usize, j: usize| -> [R; 3] {
+        let cross = |x: &Mat4<R>, y: &Mat4<R>| {
+            x[r][i].times(&y[r + 1][j]).minus(&x[r][j].times(&y[r + 1][i]))
+        };
+        [cross(a, a), cross(a, b).plus(&cross(b, a)), cross(b, b)]
     };
-    let (v0, v1, vm1, v2, vm2) = (det4(b), at(1), at(-1), at(2), at(-2));
-    let two = R::from_i64(2);
-    let two_v0 = two.times(&v0);
-    let t1 = v1.plus(&vm1).minus(&two_v0);
-    let t2 = v2.plus(&vm2).minus(&two_v0);
-    let u1 = v1.minus(&vm1);
-    let u2 = v2.minus(&vm2);
-    let e = t2.minus(&R::from_i64(4).times(&t1)).div_small(24);
-    let bq = t1.div_small(2).minus(&e);
-    let aq = u2.minus(&two.times(&u1)).div_small(12);
-    let cq = u1.div_small(2).minus(&aq);
-    [e, aq, bq, cq, v0]
+    let mut f: [R; 5] = std::array::from_fn(|_| R::zero());
+    for ((i, j), (k, l), positive) in LAPLACE_PAIRS {
+        let (top, bottom) = (minor(0, i, j), minor(2, k, l));
+        for (p, t) in top.iter().enumerate() {
+            for (q, u) in bottom.iter().enumerate() {
+                let term = t.times(u);
+                f[p + q] = if positive {
+                    f[p + q].plus(&term)
+                } else {
+                    f[p + q].minus(&term)
+                };
+            }
+        }
+    }
+    f
 }
 
 /// The characteristic quartic of two placed bodies from their placements,
