@@ -115,7 +115,9 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     // [λ², λ, 1] coefficients.
     let minor = |r: usize, i: usize, j: usize| -> [R; 3] {
         let cross = |x: &Mat4<R>, y: &Mat4<R>| {
-            x[r][i].times(&y[r + 1][j]).minus(&x[r][j].times(&y[r + 1][i]))
+            x[r][i]
+                .times(&y[r + 1][j])
+                .minus(&x[r][j].times(&y[r + 1][i]))
         };
         [cross(a, a), cross(a, b).plus(&cross(b, a)), cross(b, b)]
     };

@@ -1,25 +1,23 @@
-//! The certified filter: Bernstein coefficients in `f64` with one running
-//! error bound, subdivided by de Casteljau's algorithm in plain `f64`.
+//! The certified filter: Bernstein coefficients in `f64`, each with its
+//! own error bound, subdivided by de Casteljau's algorithm in plain `f64`.
 //!
 //! The exact integer coefficients are scaled by one common power of two so
 //! that the largest fits comfortably in `f64`. A node holds approximations
-//! `b̃_i` and one bound `e ≥ max_i |b̃_i − b_i|` on their distance to the
-//! exact scaled coefficients `b_i`; a coefficient with `|b̃_i| ≤ e` has an
-//! undecided sign, and the caller falls back to exact integers for that node.
-//! Every sign this module reports is proven.
+//! `b̃_i` and bounds `e_i ≥ |b̃_i − b_i|` on their distance to the exact
+//! scaled coefficients `b_i`; a coefficient with `|b̃_i| ≤ e_i` has an
+//! undecided sign, and the caller falls back to exact integers for that
+//! node. Every sign this module reports is proven.
 //!
-//! **The bound of a split.** One de Casteljau level computes
+//! **The bounds of a split.** One de Casteljau step computes
 //! `c̃ = fl(x̃ + ỹ)·½` (halving is exact above the subnormal range), so
-//! `|c̃ − c| ≤ E + u·(|x̃| + |ỹ|)/2 + 2^(−1075)` when the operands are within
-//! `E` of their exact values; the computed values never exceed the node's
-//! largest `M` by more than a factor `(1 + u)` per level. After the `n`
-//! levels of a split every child coefficient is within
-//! `e + n·u·M·(1 + u)ⁿ + n·2^(−1074)` of its exact value, `u = 2^(−53)`;
-//! [`FloatBernstein::split_half`] rounds that up generously to
-//! `e + n·M·2^(−51) + n·2^(−1022)`. One bound per node instead of an
-//! interval per coefficient makes the split two `f64` operations per step
-//! (no directed rounding), at the price of a slightly wider bound for the
-//! node's smallest coefficients.
+//! `|c̃ − (x + y)/2| ≤ (e_x + e_y)/2 + 2^(−52)·|c̃| + 2^(−1075)`. The bound
+//! itself is computed in `f64` as `(½(e_x + e_y) + 2^(−52)·|c̃| + 4·2^(−1074))`
+//! times `(1 + 2^(−50))`, which covers the three roundings of its own
+//! evaluation (each at most `2^(−53)` relative, and `(1 − u)⁴(1 + 8u) ≥ 1`)
+//! and an underflowed `2^(−52)·|c̃|`. Per-coefficient bounds stay as tight
+//! as outward-rounded intervals (each coefficient's error comes from the
+//! coefficients it is a combination of, not from the node's largest) at a
+//! fraction of the cost: no directed rounding, no `next_up`/`next_down`.
 
 use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
@@ -27,13 +25,20 @@ use ccd_poly::ZPoly;
 /// Largest bit length kept in front of the binary point after scaling.
 const TARGET_BITS: i64 = 900;
 
+/// `2^(−52)`: the relative rounding of one `fl(x + y)·½`.
+const ULP: f64 = f64::EPSILON;
+/// `1 + 2^(−50)`: covers the roundings of the bound's own evaluation.
+const SAFETY: f64 = 1.0 + 4.0 * f64::EPSILON;
+/// `4·2^(−1074)`: subnormal halving and underflow.
+const TINY: f64 = f64::from_bits(4);
+
 /// A node's Bernstein coefficients (the exact values times one positive
-/// factor) as `f64` approximations within a common error bound.
+/// factor) as `f64` approximations with error bounds.
 #[derive(Clone, Debug)]
 pub(crate) struct FloatBernstein {
     coeffs: Vec<f64>,
-    /// `max_i |coeffs[i] − exact_i|`.
-    err: f64,
+    /// `errs[i] ≥ |coeffs[i] − exact_i|`.
+    errs: Vec<f64>,
     /// The first (last) coefficient is known to be exactly zero: the node's
     /// end is an exact root of the polynomial.
     zero_ends: [bool; 2],
@@ -41,20 +46,24 @@ pub(crate) struct FloatBernstein {
 
 impl FloatBernstein {
     /// From interval enclosures of the exact (scaled) coefficients: their
-    /// midpoints and the largest distance to an end.
+    /// midpoints and distances to the farther end.
     fn from_intervals(iv: &[Interval]) -> FloatBernstein {
-        let mut err = 0.0f64;
-        let coeffs = iv
+        let coeffs: Vec<f64> = iv.iter().map(Interval::mid).collect();
+        let errs = iv
             .iter()
-            .map(|i| {
-                let m = i.mid();
-                err = err.max((i.hi - m).max(m - i.lo));
-                m
+            .zip(&coeffs)
+            .map(|(i, &m)| {
+                let e = (i.hi - m).max(m - i.lo);
+                if e > 0.0 {
+                    e.next_up()
+                } else {
+                    0.0
+                }
             })
             .collect();
         FloatBernstein {
             coeffs,
-            err: if err > 0.0 { err.next_up() } else { 0.0 },
+            errs,
             zero_ends: [false; 2],
         }
     }
@@ -114,12 +123,12 @@ impl FloatBernstein {
         if (i == 0 && self.zero_ends[0]) || (i == last && self.zero_ends[1]) {
             return Some(0);
         }
-        let b = self.coeffs[i];
-        if b > self.err {
+        let (b, e) = (self.coeffs[i], self.errs[i]);
+        if b > e {
             Some(1)
-        } else if b < -self.err {
+        } else if b < -e {
             Some(-1)
-        } else if b == 0.0 && self.err == 0.0 {
+        } else if b == 0.0 && e == 0.0 {
             Some(0)
         } else {
             None
@@ -140,35 +149,36 @@ impl FloatBernstein {
     pub(crate) fn set_end_zero(&mut self, at_hi: bool) {
         let i = if at_hi { self.coeffs.len() - 1 } else { 0 };
         self.coeffs[i] = 0.0;
+        self.errs[i] = 0.0;
         self.zero_ends[at_hi as usize] = true;
     }
 
     /// De Casteljau at `1/2`: the coefficients over the two halves, with the
-    /// error bound of the module documentation.
+    /// error bounds of the module documentation.
     pub(crate) fn split_half(&self) -> (FloatBernstein, FloatBernstein) {
         let n = self.coeffs.len() - 1;
-        let big = self.coeffs.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        let nf = n as f64;
-        let err = if n == 0 {
-            self.err
-        } else {
-            (self.err + nf * big * f64::powi(2.0, -51) + nf * f64::MIN_POSITIVE).next_up()
-        };
         let mut b = self.coeffs.clone();
-        let mut left = Vec::with_capacity(n + 1);
-        let mut right = vec![0.0; n + 1];
-        left.push(b[0]);
-        right[n] = b[n];
+        let mut e = self.errs.clone();
+        let mut left = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
+        let mut right = (vec![0.0; n + 1], vec![0.0; n + 1]);
+        left.0.push(b[0]);
+        left.1.push(e[0]);
+        right.0[n] = b[n];
+        right.1[n] = e[n];
         for k in 1..=n {
             for i in 0..=n - k {
-                b[i] = (b[i] + b[i + 1]) * 0.5;
+                let c = (b[i] + b[i + 1]) * 0.5;
+                e[i] = (0.5 * (e[i] + e[i + 1]) + ULP * c.abs() + TINY) * SAFETY;
+                b[i] = c;
             }
-            left.push(b[0]);
-            right[n - k] = b[n - k];
+            left.0.push(b[0]);
+            left.1.push(e[0]);
+            right.0[n - k] = b[n - k];
+            right.1[n - k] = e[n - k];
         }
-        let child = |coeffs, zero_ends| FloatBernstein {
+        let child = |(coeffs, errs), zero_ends| FloatBernstein {
             coeffs,
-            err,
+            errs,
             zero_ends,
         };
         (
@@ -232,8 +242,8 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
-        /// The running bound holds along random subdivision paths: every
-        /// approximation is within `err` of the exact coefficient, so every
+        /// The bounds hold along random subdivision paths: every
+        /// approximation is within its bound of the exact coefficient, so every
         /// sign the filter reports is the exact sign.
         #[test]
         fn running_bound_holds_along_subdivision_paths(
@@ -247,8 +257,8 @@ mod tests {
                 let (l, r) = fb.split_half();
                 let (el, er) = exact_halves(&exact);
                 (fb, exact) = if right { (r, er) } else { (l, el) };
-                let err = Rat::from_f64_exact(fb.err).expect("finite");
                 for (i, (a, e)) in fb.coeffs.iter().zip(&exact).enumerate() {
+                    let err = Rat::from_f64_exact(fb.errs[i]).expect("finite");
                     let a = Rat::from_f64_exact(*a).expect("finite");
                     proptest::prop_assert!((&a - e).abs() <= err);
                     if let Some(s) = fb.sign(i) {
