@@ -41,10 +41,12 @@ fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
         .minus(&m[r][j].times(&m[r + 1][i]))
 }
 
-/// Laplace expansion of a 4×4 determinant along its first two rows: the
-/// columns `(i, j)` of each top 2×2 minor, `(k, l)` of the complementary
+/// Columns `(i, j)` of a top 2×2 minor, `(k, l)` of the complementary
 /// bottom minor, and whether the permutation `(i j k l)` is even.
-const LAPLACE_PAIRS: [((usize, usize), (usize, usize), bool); 6] = [
+type LaplacePair = ((usize, usize), (usize, usize), bool);
+
+/// Laplace expansion of a 4×4 determinant along its first two rows.
+const LAPLACE_PAIRS: [LaplacePair; 6] = [
     ((0, 1), (2, 3), true),
     ((0, 2), (1, 3), false),
     ((0, 3), (1, 2), true),
