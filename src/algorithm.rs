@@ -2,14 +2,17 @@
 //! instant isolated with exact rational bounds and every state decided by
 //! exact signs.
 
+use crate::signs::Coefficients;
 use crate::CcdError;
 use ccd_arith::{Int, Rat};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
-use ccd_solver::{RealRoot, SignProbe};
-use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
+use ccd_solver::RealRoot;
+use ccd_subres::{
+    classify_with, closed_form, closed_forms, Configuration, Quantity, QuarticInvariants,
+};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
 /// How the roots and signs are computed.
@@ -61,39 +64,10 @@ fn invariants(f: &CharPoly) -> QuarticInvariants<ZPoly> {
     closed_forms(&f.coeffs)
 }
 
-/// The `sr` polynomials prepared for exact signs at algebraic instants, each
-/// [`SignProbe`] built on first use and shared by every candidate root.
-struct Probes<'a> {
-    inv: &'a QuarticInvariants<ZPoly>,
-    built: Vec<(Quantity, SignProbe)>,
-}
-
-impl<'a> Probes<'a> {
-    fn new(inv: &'a QuarticInvariants<ZPoly>) -> Probes<'a> {
-        Probes { inv, built: vec![] }
-    }
-
-    /// The exact sign of `q` at `root` (`0` for [`Quantity::Var`], which
-    /// has no polynomial).
-    fn sign(&mut self, q: Quantity, root: &mut RealRoot) -> i32 {
-        let Some(poly) = self.inv.get(q) else {
-            return 0;
-        };
-        let i = match self.built.iter().position(|(k, _)| *k == q) {
-            Some(i) => i,
-            None => {
-                self.built.push((q, SignProbe::new(poly)));
-                self.built.len() - 1
-            }
-        };
-        root.sign_with(&self.built[i].1)
-    }
-}
-
 /// Is the configuration at the algebraic instant `root` an external touch?
 /// Theorem 3.10(2), with the signs decided exactly at the root; `zero` lists
 /// quantities known to vanish there (the polynomial the root came from).
-fn touches_at(root: &mut RealRoot, probes: &mut Probes, zero: &[Quantity]) -> bool {
+fn touches_at(root: &mut RealRoot, f: &Coefficients, zero: &[Quantity]) -> bool {
     struct NotTouch;
     let answer = classify_with(|q| {
         if zero.contains(&q) {
@@ -102,7 +76,7 @@ fn touches_at(root: &mut RealRoot, probes: &mut Probes, zero: &[Quantity]) -> bo
         match q {
             // Var is read only on the way to "separate": not a touch.
             Quantity::Var => Err(NotTouch),
-            other => Ok(probes.sign(other, root)),
+            other => Ok(root.sign_with(&f.model(other))),
         }
     });
     matches!(answer, Ok(Configuration::ExternalTouch))
@@ -154,14 +128,17 @@ enum Candidates<'a> {
 
 fn candidates<'a>(
     f: &CharPoly,
-    inv: &'a QuarticInvariants<ZPoly>,
+    sr0: &'a ZPoly,
+    coefficients: &'a Coefficients,
     state0: State,
     stats: &mut Stats,
 ) -> Candidates<'a> {
-    if !inv.sr0.is_zero() {
+    if !sr0.is_zero() {
         stats.branch = "sr0";
-        Candidates::Roots(&inv.sr0, &[Quantity::Sr0])
-    } else if !inv.sr11.is_zero() {
+        return Candidates::Roots(sr0, &[Quantity::Sr0]);
+    }
+    let inv = coefficients.invariants();
+    if !inv.sr11.is_zero() {
         // Theorem 5.5: touching at one non-root of sr11 means throughout.
         stats.branch = "sr0=0, sr11";
         if state_at(f, &non_root_dyadic(&inv.sr11)) == State::Touch {
@@ -206,9 +183,12 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     }
     let f = CharPoly::from_placed(&a, &b);
     let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
-    let inv = invariants(&f);
+    // sr0 as a polynomial; the other closed forms only as signs at its
+    // roots (crate::signs).
+    let sr0 = closed_form(&f.coeffs, Quantity::Sr0).expect("sr0 is a closed form");
+    let coefficients = Coefficients::new(&f.coeffs);
     stats.deg_f = f.degree();
-    stats.deg_sr0 = inv.sr0.degree();
+    stats.deg_sr0 = sr0.degree();
     let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");
     let mut found = Findings {
         state0,
@@ -217,16 +197,15 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    match candidates(&f, &inv, state0, &mut stats) {
+    match candidates(&f, &sr0, &coefficients, state0, &mut stats) {
         Candidates::Throughout(state) => found.throughout = Some(state),
         Candidates::Roots(poly, zeros) => {
             stats.deg_candidates = poly.degree();
             let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
                 .map_err(|e| CcdError::Internal(e.to_string()))?;
-            let mut probes = Probes::new(&inv);
             for mut root in roots {
                 stats.candidates += 1;
-                if touches_at(&mut root, &mut probes, zeros) {
+                if touches_at(&mut root, &coefficients, zeros) {
                     root.refine_to(&width);
                     found.contacts.push(Instant {
                         lo: root.lo().clone(),

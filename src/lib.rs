@@ -35,6 +35,7 @@
 mod algorithm;
 mod error;
 mod json;
+mod signs;
 
 pub use algorithm::{symbolic, Arithmetic, Options};
 pub use ccd_scene::{Scene, SceneError};

@@ -12,11 +12,13 @@
 mod backend_gmp;
 #[cfg(not(feature = "gmp"))]
 mod backend_num;
+mod dual;
 mod int;
 mod interval;
 mod rat;
 mod ring;
 
+pub use dual::Dual;
 pub use int::Int;
 pub use interval::Interval;
 pub use rat::{ParseRatError, Rat};

@@ -24,7 +24,8 @@ mod scaled;
 
 pub use isolate::RootIter;
 use root::RootPoly;
-pub use root::{RealRoot, SignProbe};
+pub use root::{RealRoot, SignModel, SignProbe};
+pub use scaled::ScaledPoly;
 
 use ccd_arith::Rat;
 use ccd_poly::ZPoly;

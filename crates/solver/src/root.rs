@@ -50,6 +50,56 @@ impl SignProbe {
     }
 }
 
+/// A quantity `q(t)` as [`RealRoot::sign_with`] needs it near a root: for a
+/// constant `σ > 0` of the model's choosing, certified enclosures of `σ·q`
+/// and `σ·q″` over intervals, tight enclosures of `σ·q(m)` and `σ·q′(m)`
+/// at dyadic points (from exact values, one rounding each), the exact sign
+/// at a rational point, and `q` itself for deciding `q(α) = 0` (which may
+/// be formed only when first asked for).
+///
+/// [`SignProbe`] is the model of an explicit polynomial; a caller that has
+/// `q` as a function of other polynomials (the closed forms of Section 4
+/// of `f`'s coefficients) can supply the same from those, far more cheaply
+/// than forming `q`.
+pub trait SignModel {
+    /// `σ·q(X)` enclosed.
+    fn enclose(&self, x: Interval) -> Interval;
+    /// `σ·q″(X)` enclosed.
+    fn enclose_second(&self, x: Interval) -> Interval;
+    /// `(σ·q(m), σ·q′(m))` enclosed, for a dyadic `m`.
+    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval);
+    /// The exact sign of `q(x)`.
+    fn sign_at(&self, x: &Rat) -> i32;
+    /// `q` exactly.
+    fn exact(&self) -> &ZPoly;
+}
+
+impl SignModel for SignProbe {
+    fn enclose(&self, x: Interval) -> Interval {
+        self.sq.enclose(x)
+    }
+    fn enclose_second(&self, x: Interval) -> Interval {
+        self.sq.enclose_derivative(2, x)
+    }
+    /// `q(m) = H/2^(k·n)` and `q′(m) = H′/2^(k·(n−1))` for `m = a/2^k`,
+    /// both exact from one Horner pass, then scaled like the `f64` view.
+    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
+        let k = m.dyadic_exponent().expect("a dyadic point") as i64;
+        let n = self.q.degree().unwrap_or(0) as i64;
+        let (qm, dqm) = self.q.eval_homogeneous_with_derivative(m);
+        (
+            Interval::from_int_scaled(&qm, self.sq.shift() + k * n),
+            Interval::from_int_scaled(&dqm, self.sq.shift() + k * (n - 1).max(0)),
+        )
+    }
+    fn sign_at(&self, x: &Rat) -> i32 {
+        self.q.sign_at(x)
+    }
+    fn exact(&self) -> &ZPoly {
+        &self.q
+    }
+}
+
 /// A real root `α` of a squarefree `p ∈ ℤ[t]`: either known exactly
 /// (`lo = hi = α`, a rational root) or the only root of `p` in the open
 /// interval `(lo, hi)`, where `p(lo)` and `p(hi)` are nonzero with opposite
@@ -241,7 +291,7 @@ impl RealRoot {
         let sp = self.scaled();
         let shift = sp.shift();
         let n = base.poly.degree().unwrap_or(0) as i64;
-        let second = sp.enclose_second_derivative(self.enclosure());
+        let second = sp.enclose_derivative(2, self.enclosure());
         // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
         // cut δ from the root has a linear part near |p′|·δ: cuts closer
         // than `reach` would need exact evaluations, so when the model
@@ -353,41 +403,32 @@ impl RealRoot {
     /// `I`, and since `g | p` has at most the one root `α` there, that is a
     /// sign change of `g` between the ends. Between rounds the interval is
     /// refined (each step proven by exact signs of `p`).
-    pub fn sign_with(&mut self, probe: &SignProbe) -> i32 {
-        let SignProbe { q, sq } = probe;
-        if q.is_zero() {
-            return 0;
-        }
-        let n = q.degree().unwrap_or(0) as i64;
+    pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         let mut zero_checked = false;
         for round in 0.. {
             if self.sign_lo == 0 {
-                return q.sign_at(&self.lo);
+                return model.sign_at(&self.lo);
             }
             let whole = self.enclosure();
-            if let Some(s) = decided(sq.enclose(whole)) {
+            if let Some(s) = decided(model.enclose(whole)) {
                 return s;
             }
             let m = Rat::dyadic_in(&self.lo, &self.hi);
-            let k = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
-            // q(m) = H/2^(k·n) and q'(m) = H'/2^(k·(n−1)), both exact.
-            let (qm, dqm) = q.eval_homogeneous_with_derivative(&m);
-            let qm = Interval::from_int_scaled(&qm, sq.shift() + k * n);
-            let dqm = Interval::from_int_scaled(&dqm, sq.shift() + k * (n - 1).max(0));
+            let (qm, dqm) = model.value_and_slope_at(&m);
             // I − m exactly, then enclosed: an f64 interval around α itself
             // could not be narrower than an ulp of α.
             let offset =
                 Interval::from_rat(&(&self.lo - &m)).hull(&Interval::from_rat(&(&self.hi - &m)));
             let half = Interval::point(0.5);
-            if let Some(s) = decided(
-                qm + dqm * offset + sq.enclose_second_derivative(whole) * offset.square() * half,
-            ) {
+            if let Some(s) =
+                decided(qm + dqm * offset + model.enclose_second(whole) * offset.square() * half)
+            {
                 return s;
             }
             if !zero_checked && (round >= 1 || qm.contains_zero()) {
                 zero_checked = true;
-                let g = self.base.poly.gcd(q);
+                let g = self.base.poly.gcd(model.exact());
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
                     return 0;
                 }

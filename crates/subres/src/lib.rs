@@ -33,6 +33,6 @@ pub use habicht::{
     sylvester_habicht,
 };
 pub use quartic::{
-    classify, classify_with, closed_forms, sign_variations, Configuration, Quantity,
+    classify, classify_with, closed_form, closed_forms, sign_variations, Configuration, Quantity,
     QuarticInvariants, SignData,
 };

@@ -125,40 +125,127 @@ impl<R> QuarticInvariants<R> {
 /// assert_eq!(classify(&s), Configuration::Separate);
 /// ```
 pub fn closed_forms<R: RingOps>(coeffs: &[R; 5]) -> QuarticInvariants<R> {
-    let [e, a, b, c, d] = coeffs;
-    let k = |v: i64| R::from_i64(v);
-    let ab = k(12).times(e);
-    let bb = k(-3).times(a);
-    let cb = k(2).times(b);
-    let db = k(-3).times(c);
-    let eb = k(12).times(d);
-
-    let bd = bb.times(&db);
-    let delta2 = bb.times(&bb).minus(&ab.times(&cb));
-    let delta3 = cb.times(&cb).minus(&bd);
-    let w1 = ab.times(&db).minus(&bb.times(&cb));
-    let w3 = ab.times(&eb).minus(&bd);
-
-    let big_a = w3.plus(&k(3).times(&delta3));
-    let big_b = db
-        .times(&w1)
-        .plus(&eb.times(&delta2))
-        .plus(&cb.times(&delta3))
-        .negated();
-    let t = k(3)
-        .times(&delta2)
-        .times(&k(9).times(&delta3).minus(&w3))
-        .minus(&k(9).times(&w1.times(&w1)));
-    let t2 = big_a.times(&w1).minus(&k(3).times(&bb.times(&big_b)));
-    let a_sq = big_a.times(&big_a);
-    let delta1 = a_sq.times(&big_a).minus(&k(27).times(&big_b.times(&big_b)));
-
+    let x = Barred::of(coeffs);
+    let bd = x.bb.times(&x.db);
+    let (delta2, delta3, w1, w3) = (x.delta2(), x.delta3(&bd), x.w1(), x.w3(&bd));
+    let big_a = Barred::big_a(&w3, &delta3);
+    let big_b = x.big_b(&w1, &delta2, &delta3);
     QuarticInvariants {
+        sr11: Barred::t(&delta2, &delta3, &w1, &w3),
+        sr10: x.t2(&big_a, &w1, &big_b),
+        sr0: Barred::delta1(&big_a, &big_b),
         sr22: delta2,
         sr20: w3.negated(),
-        sr11: t,
-        sr10: t2,
-        sr0: delta1,
+    }
+}
+
+/// One closed form of [`closed_forms`] (`None` for [`Quantity::Var`]),
+/// with only the products it needs: 2 for `sr22` and `sr20`, 8 for `sr11`,
+/// 11 for `sr10`, 13 for `sr0`. For reading one quantity at a point, or as
+/// a polynomial when the others are needed only as signs at a few points.
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_subres::{closed_form, closed_forms, Quantity};
+/// let f = [-2, 2, 14, -2, -12].map(Int::from);
+/// assert_eq!(closed_form(&f, Quantity::Sr0), Some(closed_forms(&f).sr0));
+/// assert_eq!(closed_form(&f, Quantity::Sr10), Some(closed_forms(&f).sr10));
+/// ```
+pub fn closed_form<R: RingOps>(coeffs: &[R; 5], q: Quantity) -> Option<R> {
+    let x = Barred::of(coeffs);
+    if q == Quantity::Sr22 {
+        return Some(x.delta2());
+    }
+    let bd = x.bb.times(&x.db);
+    let w3 = x.w3(&bd);
+    if q == Quantity::Sr20 {
+        return Some(w3.negated());
+    }
+    let (delta2, delta3, w1) = (x.delta2(), x.delta3(&bd), x.w1());
+    match q {
+        Quantity::Sr11 => Some(Barred::t(&delta2, &delta3, &w1, &w3)),
+        Quantity::Sr10 | Quantity::Sr0 => {
+            let big_a = Barred::big_a(&w3, &delta3);
+            let big_b = x.big_b(&w1, &delta2, &delta3);
+            Some(if q == Quantity::Sr10 {
+                x.t2(&big_a, &w1, &big_b)
+            } else {
+                Barred::delta1(&big_a, &big_b)
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The scaled coefficients `ā = 12e, b̄ = −3a, c̄ = 2b, d̄ = −3c, ē = 12d`
+/// and the intermediate quantities of the closed forms built from them.
+struct Barred<R> {
+    ab: R,
+    bb: R,
+    cb: R,
+    db: R,
+    eb: R,
+}
+
+impl<R: RingOps> Barred<R> {
+    fn of(coeffs: &[R; 5]) -> Barred<R> {
+        let [e, a, b, c, d] = coeffs;
+        let k = |v: i64| R::from_i64(v);
+        Barred {
+            ab: k(12).times(e),
+            bb: k(-3).times(a),
+            cb: k(2).times(b),
+            db: k(-3).times(c),
+            eb: k(12).times(d),
+        }
+    }
+    /// `Δ2 = b̄² − āc̄`.
+    fn delta2(&self) -> R {
+        self.bb.times(&self.bb).minus(&self.ab.times(&self.cb))
+    }
+    /// `Δ3 = c̄² − b̄d̄`.
+    fn delta3(&self, bd: &R) -> R {
+        self.cb.times(&self.cb).minus(bd)
+    }
+    /// `W1 = ād̄ − b̄c̄`.
+    fn w1(&self) -> R {
+        self.ab.times(&self.db).minus(&self.bb.times(&self.cb))
+    }
+    /// `W3 = āē − b̄d̄`.
+    fn w3(&self, bd: &R) -> R {
+        self.ab.times(&self.eb).minus(bd)
+    }
+    /// `A = W3 + 3Δ3`.
+    fn big_a(w3: &R, delta3: &R) -> R {
+        w3.plus(&R::from_i64(3).times(delta3))
+    }
+    /// `B = −(d̄W1 + ēΔ2 + c̄Δ3)`.
+    fn big_b(&self, w1: &R, delta2: &R, delta3: &R) -> R {
+        self.db
+            .times(w1)
+            .plus(&self.eb.times(delta2))
+            .plus(&self.cb.times(delta3))
+            .negated()
+    }
+    /// `T = 3Δ2(9Δ3 − W3) − 9W1²` (`sr11`).
+    fn t(delta2: &R, delta3: &R, w1: &R, w3: &R) -> R {
+        let k = |v: i64| R::from_i64(v);
+        k(3).times(delta2)
+            .times(&k(9).times(delta3).minus(w3))
+            .minus(&k(9).times(&w1.times(w1)))
+    }
+    /// `T2 = A·W1 − 3b̄B` (`sr10`).
+    fn t2(&self, big_a: &R, w1: &R, big_b: &R) -> R {
+        big_a
+            .times(w1)
+            .minus(&R::from_i64(3).times(&self.bb.times(big_b)))
+    }
+    /// `Δ1 = A³ − 27B²` (`sr0`).
+    fn delta1(big_a: &R, big_b: &R) -> R {
+        big_a
+            .times(big_a)
+            .times(big_a)
+            .minus(&R::from_i64(27).times(&big_b.times(big_b)))
     }
 }
 

@@ -1,0 +1,247 @@
+//! Signs of `sr22, sr20, sr11, sr10` at the roots of `sr0`, from the
+//! coefficients of `f(λ; t)` instead of from those four polynomials.
+//!
+//! Algorithm 1 isolates the roots of `sr0` (or `sr11`), so that polynomial
+//! is formed; the other closed forms are read only as signs at a few
+//! algebraic instants. [`RealRoot::sign_with`] needs of a quantity `q` near
+//! a root only enclosures of `q` and `q″` over an interval, `q(m)` and
+//! `q′(m)` at a dyadic point, and `q` exactly when `q(α) = 0` must be
+//! decided. Every closed form `Q` of Section 4 is a polynomial in the five
+//! coefficients `f_k(t)`, homogeneous of degree `w` (2 for `sr22, sr20`, 4
+//! for `sr11, sr10`), so all of those come from the `f_k` by running the
+//! same generic [`closed_forms`] over other rings:
+//!
+//! * `q(X)`: over `f64` intervals of `f_k(X)`;
+//! * `q″(X)`: over nested dual numbers of `(f_k, f_k′, f_k″)(X)`;
+//! * `q(m), q′(m)` exactly: over dual numbers of the exact homogeneous
+//!   values `2^(jn)·(f_k(m), f_k′(m))` at `m = a/2^j` (so the result is
+//!   `2^(jnw)·(q(m), q′(m))`), for degree-`n` polynomials `f_k` with
+//!   coefficients far shorter than those of the degree-`4n`/`6n` forms;
+//! * `q` itself only if a zero has to be decided (rare; formed once).
+//!
+//! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
+//! products of the closed forms).
+
+use ccd_arith::{Dual, Int, Interval, Rat, RingOps};
+use ccd_poly::ZPoly;
+use ccd_solver::{ScaledPoly, SignModel};
+use ccd_subres::{closed_form, closed_forms, Quantity, QuarticInvariants};
+use std::cell::RefCell;
+use std::sync::OnceLock;
+
+/// Bits kept in front of the binary point of the largest scaled
+/// coefficient: products of four values stay far inside `f64`'s range.
+const VIEW_BITS: i64 = 100;
+
+/// The coefficients of `f(λ; t)` (high → low in λ) and what the sign models
+/// need of them, shared by the models of all quantities.
+pub(crate) struct Coefficients<'a> {
+    coeffs: &'a [ZPoly; 5],
+    /// `f_k · 2^(−shift)` in `f64`.
+    views: [ScaledPoly; 5],
+    shift: i64,
+    /// The common degree bound `n`.
+    degree: usize,
+    /// The five closed forms as polynomials, formed on first need.
+    full: OnceLock<QuarticInvariants<ZPoly>>,
+    /// The last point's jets: the quantities at one root are asked for at
+    /// the same point.
+    last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
+    /// The last interval's enclosures of `(f_k, f_k′, f_k″)`, likewise.
+    last_box: RefCell<Option<(Interval, [Jet2; 5])>>,
+}
+
+/// `(f, f′, f″)` as nested dual numbers: `d.d` of a polynomial in them is
+/// the second derivative.
+type Jet2 = Dual<Dual<Interval>>;
+
+impl<'a> Coefficients<'a> {
+    pub(crate) fn new(coeffs: &'a [ZPoly; 5]) -> Coefficients<'a> {
+        let bits = coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0) as i64;
+        let shift = (bits - VIEW_BITS).max(0);
+        Coefficients {
+            coeffs,
+            views: std::array::from_fn(|k| ScaledPoly::with_shift(&coeffs[k], shift)),
+            shift,
+            degree: coeffs.iter().filter_map(ZPoly::degree).max().unwrap_or(0),
+            full: OnceLock::new(),
+            last: RefCell::new(None),
+            last_box: RefCell::new(None),
+        }
+    }
+
+    /// The five closed forms as polynomials (formed once).
+    pub(crate) fn invariants(&self) -> &QuarticInvariants<ZPoly> {
+        self.full.get_or_init(|| closed_forms(self.coeffs))
+    }
+
+    /// The sign model of `q` (not [`Quantity::Var`]).
+    pub(crate) fn model(&self, q: Quantity) -> ClosedForm<'_, 'a> {
+        ClosedForm { f: self, q }
+    }
+}
+
+/// Homogeneous degree of each closed form in the coefficients of `f`.
+fn weight(q: Quantity) -> i64 {
+    match q {
+        Quantity::Sr22 | Quantity::Sr20 => 2,
+        Quantity::Sr11 | Quantity::Sr10 => 4,
+        Quantity::Sr0 => 6,
+        Quantity::Var => 0,
+    }
+}
+
+/// The closed form `q` of `f`'s coefficients as a [`SignModel`], with
+/// `σ = 2^(−shift·w)`.
+pub(crate) struct ClosedForm<'c, 'a> {
+    f: &'c Coefficients<'a>,
+    q: Quantity,
+}
+
+impl ClosedForm<'_, '_> {
+    /// `q` of five ring values.
+    fn of<R: RingOps>(&self, values: &[R; 5]) -> R {
+        closed_form(values, self.q).expect("a closed form, not Var")
+    }
+
+    /// `(F_k, G_k) = (b^n·f_k(x), b^n·f_k′(x))` for `x = a/b` with the
+    /// common `n` (each `f_k` evaluated homogeneously, then brought to
+    /// degree `n`), so that `Q(F + εG) = b^(nw)·(q(x) + ε·q′(x))`.
+    fn jets(&self, x: &Rat) -> [Dual<Int>; 5] {
+        if let Some((at, jets)) = &*self.f.last.borrow() {
+            if at == x {
+                return jets.clone();
+            }
+        }
+        let jets = self.compute_jets(x);
+        *self.f.last.borrow_mut() = Some((x.clone(), jets.clone()));
+        jets
+    }
+
+    fn compute_jets(&self, x: &Rat) -> [Dual<Int>; 5] {
+        let n = self.f.degree;
+        // v·b^e: a shift at dyadic points.
+        let times_b_pow = |v: Int, e: usize| match x.dyadic_exponent() {
+            Some(j) => v.shl(j * e as u64),
+            None => &v * &x.denom().pow(e as u32),
+        };
+        std::array::from_fn(|k| {
+            let p = &self.f.coeffs[k];
+            let nk = p.degree().unwrap_or(0);
+            let (v, d) = p.eval_homogeneous_with_derivative(x);
+            // v = b^nk·f(x), d = b^(nk−1)·f′(x) (d = 0 for constants).
+            Dual {
+                v: times_b_pow(v, n - nk),
+                d: times_b_pow(d, n + 1 - nk.max(1)),
+            }
+        })
+    }
+}
+
+impl ClosedForm<'_, '_> {
+    /// Enclosures of `(f_k, f_k′, f_k″)` over `x` (scaled), cached for the
+    /// last `x`.
+    fn box_jets(&self, x: Interval) -> [Jet2; 5] {
+        if let Some((at, jets)) = &*self.f.last_box.borrow() {
+            if *at == x {
+                return jets.clone();
+            }
+        }
+        let jets: [Jet2; 5] = std::array::from_fn(|k| {
+            let view = &self.f.views[k];
+            let d1 = view.enclose_derivative(1, x);
+            Dual {
+                v: Dual {
+                    v: view.enclose(x),
+                    d: d1,
+                },
+                d: Dual {
+                    v: d1,
+                    d: view.enclose_derivative(2, x),
+                },
+            }
+        });
+        *self.f.last_box.borrow_mut() = Some((x, jets.clone()));
+        jets
+    }
+}
+
+impl SignModel for ClosedForm<'_, '_> {
+    fn enclose(&self, x: Interval) -> Interval {
+        self.of(&self.box_jets(x).map(|jet| jet.v.v))
+    }
+
+    fn enclose_second(&self, x: Interval) -> Interval {
+        self.of(&self.box_jets(x)).d.d
+    }
+
+    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
+        let j = m.dyadic_exponent().expect("a dyadic point") as i64;
+        let w = weight(self.q);
+        let q = self.of(&self.jets(m));
+        let scale = j * self.f.degree as i64 * w + self.f.shift * w;
+        (
+            Interval::from_int_scaled(&q.v, scale),
+            Interval::from_int_scaled(&q.d, scale),
+        )
+    }
+
+    fn sign_at(&self, x: &Rat) -> i32 {
+        // b^(nw) > 0 does not change the sign.
+        self.of(&self.jets(x).map(|jet| jet.v)).signum()
+    }
+
+    fn exact(&self) -> &ZPoly {
+        self.f
+            .invariants()
+            .get(self.q)
+            .expect("a closed form, not Var")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn poly(c: &[i64]) -> ZPoly {
+        ZPoly::from_i64s(c)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Each model agrees with the polynomial it stands for: exact signs
+        /// and values at points, and enclosures that hold the exact values.
+        #[test]
+        fn models_agree_with_the_closed_form_polynomials(
+            raw in proptest::collection::vec(proptest::collection::vec(-40i64..40, 1..5), 5),
+            a in -64i64..64, j in 0u64..8, b in 1i64..9,
+        ) {
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| poly(&raw[k]));
+            let f = Coefficients::new(&coeffs);
+            let inv = closed_forms(&coeffs);
+            let m = Rat::dyadic(Int::from(a), j);
+            let x = Rat::from_frac(a, b);
+            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10] {
+                let model = f.model(q);
+                let exact = inv.get(q).expect("a polynomial");
+                prop_assert_eq!(model.exact(), exact);
+                prop_assert_eq!(model.sign_at(&x), exact.sign_at(&x));
+                let sigma = |v: Rat| v.mul_pow2(-f.shift * weight(q));
+                let (v, d) = model.value_and_slope_at(&m);
+                let holds = |iv: Interval, r: Rat| {
+                    Rat::from_f64_exact(iv.lo).expect("finite") <= r
+                        && r <= Rat::from_f64_exact(iv.hi).expect("finite")
+                };
+                prop_assert!(holds(v, sigma(exact.eval_rat(&m))));
+                prop_assert!(holds(d, sigma(exact.derivative().eval_rat(&m))));
+                let point = Interval::from_rat(&m);
+                if point.lo == point.hi {
+                    prop_assert!(holds(model.enclose(point), sigma(exact.eval_rat(&m))));
+                    let second = exact.derivative().derivative().eval_rat(&m);
+                    prop_assert!(holds(model.enclose_second(point), sigma(second)));
+                }
+            }
+        }
+    }
+}
