@@ -387,10 +387,11 @@ impl RealRoot {
         self.sign_with(&SignProbe::new(q))
     }
 
-    /// The exact sign (−1, 0, 1) of `q(α)` for a prepared `q`.
+    /// The exact sign (−1, 0, 1) of `q(α)` for a model of `q` (a
+    /// [`SignProbe`] of an explicit polynomial, or any [`SignModel`]).
     ///
     /// Each round tries, on the isolating interval `I = [lo, hi]`:
-    /// 1. the interval enclosure of `q` over `I` (cheap, but limited by
+    /// 1. the model's enclosure of `q` over `I` (cheap, but limited by
     ///    rounding when `q`'s coefficients dwarf `q(α)`);
     /// 2. the Taylor form with an EXACT centre and slope:
     ///    `q(I) ⊆ q(m) + q'(m)·(I − m) + q''(I)·(I − m)²/2`, with `q(m)` and
@@ -400,9 +401,10 @@ impl RealRoot {
     ///    narrower than about `|q(α)/q'(α)|`.
     ///
     /// Zero is decided exactly: `q(α) = 0` iff `g = gcd(p, q)` has a root in
-    /// `I`, and since `g | p` has at most the one root `α` there, that is a
-    /// sign change of `g` between the ends. Between rounds the interval is
-    /// refined (each step proven by exact signs of `p`).
+    /// `I` (`q` from [`SignModel::exact`]; `q ≡ 0` gives `g = p`), and since
+    /// `g | p` has at most the one root `α` there, that is a sign change of
+    /// `g` between the ends. Between rounds the interval is refined (each
+    /// step proven by exact signs of `p`).
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         let mut zero_checked = false;

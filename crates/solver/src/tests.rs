@@ -79,6 +79,8 @@ fn sign_decisions_at_algebraic_roots() {
     // q vanishes at α: (t² + 2t − 1)(t − 5).
     let q = &p * &ZPoly::from_i64s(&[-5, 1]);
     assert_eq!(alpha.sign_of(&q), 0);
+    // The zero polynomial vanishes everywhere (decided by gcd(p, 0) = p).
+    assert_eq!(alpha.clone().sign_of(&ZPoly::zero()), 0);
     // 1000 t − 414 > 0 at α ≈ 0.41421; 1000 t − 415 < 0.
     assert_eq!(alpha.sign_of(&ZPoly::from_i64s(&[-414, 1000])), 1);
     assert_eq!(alpha.sign_of(&ZPoly::from_i64s(&[-415, 1000])), -1);
