@@ -8,11 +8,14 @@
 use ccd_motion::{moving_quadric, CharPoly};
 use ccd_poly::ZPoly;
 use ccd_quadric::characteristic;
-use ccd_subres::closed_forms;
+use ccd_subres::{closed_form, Quantity};
 
 fn degrees(f: &[ZPoly; 5]) -> (usize, usize) {
     let deg_f = f.iter().filter_map(ZPoly::degree).max().unwrap_or(0);
-    (deg_f, closed_forms(f).sr0.degree().unwrap_or(0))
+    (
+        deg_f,
+        closed_form(f, Quantity::Sr0).map_or(0, |s| s.degree().unwrap_or(0)),
+    )
 }
 
 fn main() {

@@ -10,9 +10,7 @@ use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
 use ccd_solver::RealRoot;
-use ccd_subres::{
-    classify_with, closed_form, closed_forms, Configuration, Quantity, QuarticInvariants,
-};
+use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
 /// How the roots and signs are computed.
@@ -59,11 +57,6 @@ fn state_at(f: &CharPoly, u: &Rat) -> State {
     State::from(classify_quartic(&f.at_scaled(u), Int::signum))
 }
 
-/// The sr polynomials of `f(λ; u)` (Section 4 closed forms over ℤ[u]).
-fn invariants(f: &CharPoly) -> QuarticInvariants<ZPoly> {
-    closed_forms(&f.coeffs)
-}
-
 /// Is the configuration at the algebraic instant `root` an external touch?
 /// Theorem 3.10(2), with the signs decided exactly at the root; `zero` lists
 /// quantities known to vanish there (the polynomial the root came from).
@@ -105,7 +98,7 @@ fn placed(scene: &Scene) -> Result<(PlacedQuadric, PlacedQuadric), CcdError> {
 pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), CcdError> {
     let (a, b) = placed(scene)?;
     let f = CharPoly::from_placed(&a, &b);
-    let inv = invariants(&f);
+    let inv = closed_forms(&f.coeffs);
     Ok((f, inv))
 }
 
@@ -137,14 +130,14 @@ fn candidates<'a>(
         stats.branch = "sr0";
         return Candidates::Roots(sr0, &[Quantity::Sr0]);
     }
-    let inv = coefficients.invariants();
-    if !inv.sr11.is_zero() {
+    let sr11 = coefficients.polynomial(Quantity::Sr11);
+    if !sr11.is_zero() {
         // Theorem 5.5: touching at one non-root of sr11 means throughout.
         stats.branch = "sr0=0, sr11";
-        if state_at(f, &non_root_dyadic(&inv.sr11)) == State::Touch {
+        if state_at(f, &non_root_dyadic(sr11)) == State::Touch {
             Candidates::Throughout(State::Touch)
         } else {
-            Candidates::Roots(&inv.sr11, &[Quantity::Sr0, Quantity::Sr11])
+            Candidates::Roots(sr11, &[Quantity::Sr0, Quantity::Sr11])
         }
     } else {
         // Theorem 5.6: the state at t0 holds throughout.
@@ -185,8 +178,8 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
     // sr0 as a polynomial; the other closed forms only as signs at its
     // roots (crate::signs).
-    let sr0 = closed_form(&f.coeffs, Quantity::Sr0).expect("sr0 is a closed form");
     let coefficients = Coefficients::new(&f.coeffs);
+    let sr0 = coefficients.polynomial(Quantity::Sr0);
     stats.deg_f = f.degree();
     stats.deg_sr0 = sr0.degree();
     let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");
@@ -197,7 +190,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    match candidates(&f, &sr0, &coefficients, state0, &mut stats) {
+    match candidates(&f, sr0, &coefficients, state0, &mut stats) {
         Candidates::Throughout(state) => found.throughout = Some(state),
         Candidates::Roots(poly, zeros) => {
             stats.deg_candidates = poly.degree();

@@ -39,7 +39,9 @@ impl CcdError {
         let field = match source {
             MotionError::QuaternionVanishes { .. } => "motion.orientation",
             MotionError::SingularAffine { .. } => "motion.matrix",
-            MotionError::WeightVanishes { .. } => "motion.weights",
+            MotionError::WeightVanishes { .. } | MotionError::MalformedCurve { .. } => {
+                "motion.weights"
+            }
             MotionError::NotRational { .. } => "motion.kind",
         };
         CcdError::Motion {

@@ -25,7 +25,7 @@
 use ccd_arith::{Dual, Int, Interval, Rat, RingOps};
 use ccd_poly::ZPoly;
 use ccd_solver::{ScaledPoly, SignModel};
-use ccd_subres::{closed_form, closed_forms, Quantity, QuarticInvariants};
+use ccd_subres::{closed_form, Quantity};
 use std::cell::RefCell;
 use std::sync::OnceLock;
 
@@ -42,8 +42,9 @@ pub(crate) struct Coefficients<'a> {
     shift: i64,
     /// The common degree bound `n`.
     degree: usize,
-    /// The five closed forms as polynomials, formed on first need.
-    full: OnceLock<QuarticInvariants<ZPoly>>,
+    /// The closed forms as polynomials, each formed on first need
+    /// (indexed by [`slot`]).
+    polys: [OnceLock<ZPoly>; 5],
     /// The last point's jets: the quantities at one root are asked for at
     /// the same point.
     last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
@@ -64,20 +65,33 @@ impl<'a> Coefficients<'a> {
             views: std::array::from_fn(|k| ScaledPoly::with_shift(&coeffs[k], shift)),
             shift,
             degree: coeffs.iter().filter_map(ZPoly::degree).max().unwrap_or(0),
-            full: OnceLock::new(),
+            polys: Default::default(),
             last: RefCell::new(None),
             last_box: RefCell::new(None),
         }
     }
 
-    /// The five closed forms as polynomials (formed once).
-    pub(crate) fn invariants(&self) -> &QuarticInvariants<ZPoly> {
-        self.full.get_or_init(|| closed_forms(self.coeffs))
+    /// The closed form `q` (not [`Quantity::Var`]) as a polynomial, formed
+    /// once, with only the products it needs.
+    pub(crate) fn polynomial(&self, q: Quantity) -> &ZPoly {
+        self.polys[slot(q)]
+            .get_or_init(|| closed_form(self.coeffs, q).expect("a closed form, not Var"))
     }
 
     /// The sign model of `q` (not [`Quantity::Var`]).
     pub(crate) fn model(&self, q: Quantity) -> ClosedForm<'_, 'a> {
         ClosedForm { f: self, q }
+    }
+}
+
+/// The cache slot of a closed form.
+fn slot(q: Quantity) -> usize {
+    match q {
+        Quantity::Sr22 => 0,
+        Quantity::Sr20 => 1,
+        Quantity::Sr11 => 2,
+        Quantity::Sr10 => 3,
+        Quantity::Sr0 | Quantity::Var => 4,
     }
 }
 
@@ -192,16 +206,14 @@ impl SignModel for ClosedForm<'_, '_> {
     }
 
     fn exact(&self) -> &ZPoly {
-        self.f
-            .invariants()
-            .get(self.q)
-            .expect("a closed form, not Var")
+        self.f.polynomial(self.q)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ccd_subres::closed_forms;
     use proptest::prelude::*;
 
     fn poly(c: &[i64]) -> ZPoly {

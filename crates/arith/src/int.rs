@@ -123,13 +123,17 @@ impl Int {
     pub fn gcd(&self, other: &Int) -> Int {
         Int(k::gcd(&self.0, &other.0))
     }
-    /// Least common multiple of two positive integers (common denominators).
+    /// Least common multiple (common denominators); `0` when either is `0`.
     ///
     /// ```
     /// use ccd_arith::Int;
     /// assert_eq!(Int::from(4).lcm(&Int::from(6)), Int::from(12));
+    /// assert_eq!(Int::zero().lcm(&Int::zero()), Int::zero());
     /// ```
     pub fn lcm(&self, other: &Int) -> Int {
+        if self.is_zero() || other.is_zero() {
+            return Int::zero();
+        }
         self.div_exact(&self.gcd(other)) * other
     }
     /// `self · 2^s`.

@@ -202,7 +202,8 @@ impl Rat {
     /// The dyadic rational `m/2^k` with the smallest `k` in `[lo, hi]`
     /// (`lo <= hi`): the cheapest point of an interval to evaluate at exactly.
     pub fn dyadic_in(lo: &Rat, hi: &Rat) -> Rat {
-        debug_assert!(lo <= hi);
+        // Either order: a reversed pair would never find a level.
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         match (lo.dyadic_exponent(), hi.dyadic_exponent()) {
             (Some(kl), Some(kh)) => Rat::dyadic_in_dyadic(lo, kl, hi, kh),
             _ => Rat::dyadic_in_search(lo, hi),
@@ -254,6 +255,13 @@ impl Rat {
             let m = -(-a.shl(k)).div_floor(b);
             (&m * d <= c.shl(k)).then_some(m)
         };
+        // The cheap answers first: zero, then an integer.
+        if lo.num.signum() <= 0 && hi.num.signum() >= 0 {
+            return Rat::zero();
+        }
+        if let Some(m) = at_level(0) {
+            return Rat::from_int(m);
+        }
         let w = hi - lo;
         if w.is_zero() {
             return lo.clone();
@@ -263,12 +271,6 @@ impl Rat {
             top += 1;
         }
         let mut bottom = 0u64;
-        if lo.num.signum() <= 0 && hi.num.signum() >= 0 {
-            return Rat::zero();
-        }
-        if let Some(m) = at_level(0) {
-            return Rat::from_int(m);
-        }
         // Invariant: no point at `bottom`, a point at `top`.
         while top - bottom > 1 {
             let mid = bottom + (top - bottom) / 2;
@@ -592,6 +594,11 @@ mod tests {
         let d = Rat::dyadic_in(&Rat::from_frac(1, 3), &Rat::from_frac(2, 5));
         assert_eq!(d, Rat::from_frac(3, 8));
         assert_eq!(d.dyadic_exponent(), Some(3));
+        // Ends in either order (a reversed pair used to search forever).
+        assert_eq!(
+            Rat::dyadic_in(&Rat::from_frac(2, 5), &Rat::from_frac(1, 3)),
+            Rat::from_frac(3, 8)
+        );
         // Zero, when inside, is the cheapest point of all.
         assert_eq!(
             Rat::dyadic_in(&Rat::from_frac(-7, 3), &Rat::from(5)),

@@ -18,12 +18,12 @@
 //!   uncertified candidate, never dropped and never called certified.
 
 use crate::dual::Dual;
-use crate::placement::invariants_at;
+use crate::placement::characteristic_at;
 use crate::real::Real;
 use crate::trig::Trig;
 use ccd_arith::Rat;
 use ccd_motion::Body;
-use ccd_subres::Quantity;
+use ccd_subres::{closed_form, Quantity};
 
 /// One quantity of Theorem 3.10 as a function of t for a pair of bodies.
 #[derive(Clone, Copy, Debug)]
@@ -41,8 +41,12 @@ pub struct Problem<'a> {
 impl Problem<'_> {
     /// The quantity enclosed at `t` (a point, a box, or a dual number).
     pub fn value<N: Trig>(&self, t: &N, prec: u32) -> N {
-        let (_, inv) = invariants_at(self.a, self.b, self.span, t, prec);
-        inv.get(self.target).cloned().unwrap_or_else(N::zero)
+        // Only the products the target needs (Var has no closed form).
+        closed_form(
+            &characteristic_at(self.a, self.b, self.span, t, prec),
+            self.target,
+        )
+        .unwrap_or_else(N::zero)
     }
 }
 

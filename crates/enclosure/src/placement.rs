@@ -287,9 +287,15 @@ fn quadrics_centred<N: Trig>(
     )
 }
 
-/// `f(λ; t) = det(λA(t) + B(t))` as `[e, a, b, c, d]` (high → low) and the
-/// five quantities of Theorem 3.10 (Section 4 closed forms), enclosed in
-/// `N` at the time `t`.
+/// `f(λ; t) = det(λA(t) + B(t))` as `[e, a, b, c, d]` (high → low),
+/// enclosed in `N` at the time `t`.
+pub fn characteristic_at<N: Trig>(a: &Body, b: &Body, span: &[Rat; 2], t: &N, prec: u32) -> [N; 5] {
+    let (ma, mb) = quadrics_centred(a, b, span, t, prec);
+    characteristic(&ma, &mb)
+}
+
+/// [`characteristic_at`] and the five quantities of Theorem 3.10 (Section 4
+/// closed forms), enclosed in `N` at the time `t`.
 pub fn invariants_at<N: Trig>(
     a: &Body,
     b: &Body,
@@ -297,8 +303,7 @@ pub fn invariants_at<N: Trig>(
     t: &N,
     prec: u32,
 ) -> ([N; 5], QuarticInvariants<N>) {
-    let (ma, mb) = quadrics_centred(a, b, span, t, prec);
-    let f = characteristic(&ma, &mb);
+    let f = characteristic_at(a, b, span, t, prec);
     let inv = closed_forms(&f);
     (f, inv)
 }

@@ -54,19 +54,6 @@ fn int_to_f64_scaled(x: &Int, shift: i64) -> f64 {
     }
 }
 
-/// The scaled Bernstein coefficients `C(n, i)·b_i` of `p` on `[0, 1]`
-/// (`n = deg p`), exactly: `Σ_j a_j s^j (1 + s)^(n − j)` read backwards,
-/// i.e. reverse, Taylor shift by 1, reverse (additions only; see
-/// `ccd_poly::Bernstein`).
-fn scaled_bernstein(p: &ZPoly) -> Vec<Int> {
-    let n = p.degree().unwrap_or(0);
-    let reversed = ZPoly::new(p.coeffs().iter().rev().cloned().collect());
-    let mut c = reversed.taylor_shift(&Int::one()).into_coeffs();
-    c.resize(n + 1, Int::zero());
-    c.reverse();
-    c
-}
-
 /// Converts the exact `f(λ; u)` to `f64` and computes its `sr` polynomials.
 ///
 /// The Bernstein coefficients of `f`'s coefficients are computed exactly
@@ -98,7 +85,7 @@ fn scaled_bernstein(p: &ZPoly) -> Vec<Int> {
 /// assert!(!p.inv.sr11.is_negligible(1e-10));
 /// ```
 pub fn prepare(f: &CharPoly) -> Prepared {
-    let scaled: [Vec<Int>; 5] = f.coeffs.each_ref().map(scaled_bernstein);
+    let scaled: [Vec<Int>; 5] = f.coeffs.each_ref().map(ZPoly::scaled_bernstein);
     let bits = |c: &Vec<Int>| c.iter().map(Int::bits).max().unwrap_or(0) as i64;
     // coeffs[i] is the coefficient of λ^(4 − i).
     let b: [i64; 5] = scaled.each_ref().map(bits);
@@ -168,16 +155,16 @@ mod tests {
     fn exact_bernstein_conversion() {
         // (1 − u)^3 = Σ C(3,i) b_i …: scaled coefficients [1, 0, 0, 0].
         let p = ZPoly::from_i64s(&[1, -3, 3, -1]);
-        assert_eq!(scaled_bernstein(&p), [1, 0, 0, 0].map(Int::from));
+        assert_eq!(p.scaled_bernstein(), [1, 0, 0, 0].map(Int::from));
         // u² (a_0 = 0, the reversal drops it): [0, 0, 1].
         assert_eq!(
-            scaled_bernstein(&ZPoly::from_i64s(&[0, 0, 1])),
+            ZPoly::from_i64s(&[0, 0, 1]).scaled_bernstein(),
             [0, 0, 1].map(Int::from)
         );
-        assert_eq!(scaled_bernstein(&ZPoly::zero()), [Int::zero()]);
+        assert_eq!(ZPoly::zero().scaled_bernstein(), [Int::zero()]);
         // 2 + u: [2, 3].
         assert_eq!(
-            scaled_bernstein(&ZPoly::from_i64s(&[2, 1])),
+            ZPoly::from_i64s(&[2, 1]).scaled_bernstein(),
             [2, 3].map(Int::from)
         );
     }

@@ -95,22 +95,11 @@ impl CharPoly {
     /// `q^deg`: integers with the signs and ratios of [`CharPoly::at`], which
     /// is all Theorem 3.10 reads.
     pub fn at_scaled(&self, u: &Rat) -> [Int; 5] {
-        let (p, q) = (u.numer(), u.denom());
         let d = self.degree();
-        let qpow: Vec<Int> = std::iter::successors(Some(Int::one()), |x| Some(x * q))
-            .take(d + 1)
-            .collect();
+        // q^deg(c)·c(p/q), brought to the common q^d.
         self.coeffs.each_ref().map(|c| {
-            let cs = c.coeffs();
-            let Some(top) = cs.len().checked_sub(1) else {
-                return Int::zero();
-            };
-            // Σ c_i p^i q^(d − i), by Horner in p with the q powers folded in.
-            let mut acc = cs[top].clone();
-            for (i, ci) in cs.iter().enumerate().rev().skip(1) {
-                acc = &acc * p + ci * &qpow[top - i];
-            }
-            acc * &qpow[d - top]
+            let top = c.degree().unwrap_or(0);
+            c.eval_homogeneous(u) * u.denom().pow((d - top) as u32)
         })
     }
 }

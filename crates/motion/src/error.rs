@@ -21,6 +21,16 @@ pub enum MotionError {
         /// Approximate instant.
         at: f64,
     },
+    /// A Bézier curve without control points, or whose weights are not one
+    /// per control point (a validated scene never has one; a `Body` built
+    /// through the API can).
+    #[error("a Bézier curve has {points} control points and {weights} weights (needs at least one point and one weight per point)")]
+    MalformedCurve {
+        /// Number of control points.
+        points: usize,
+        /// Number of weights.
+        weights: usize,
+    },
     /// A kind that has no exact rational form (helical) in the exact path.
     #[error("the {kind} motion is not rational; it needs the interval path")]
     NotRational {

@@ -120,6 +120,21 @@ impl Motion {
     pub fn is_rational(&self) -> bool {
         !matches!(self, Motion::Helical { .. })
     }
+    /// `(control points, weights)` of each Bézier curve of the motion.
+    pub(crate) fn curve_shapes(&self) -> Vec<(usize, Option<usize>)> {
+        fn shape<P>(c: &Bezier<P>) -> (usize, Option<usize>) {
+            (c.points.len(), c.weights.as_ref().map(Vec::len))
+        }
+        match self {
+            Motion::Static { .. } | Motion::Helical { .. } => vec![],
+            Motion::Translation { center, .. } => vec![shape(center)],
+            Motion::Rigid {
+                orientation,
+                center,
+            } => vec![shape(orientation), shape(center)],
+            Motion::Affine { matrix } => vec![shape(matrix)],
+        }
+    }
 }
 
 /// One ellipsoid of a scene: semi-axes along its body axes and its motion.

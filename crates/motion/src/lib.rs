@@ -6,7 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod characteristic;
-pub mod curve;
+mod curve;
 mod error;
 pub mod kinds;
 pub mod matrices;

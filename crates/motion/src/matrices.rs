@@ -8,8 +8,8 @@ use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat, RingOps};
 use ccd_poly::{QPoly, ZPoly};
 use ccd_quadric::{
-    affine_inverse, affine_placement, body_diagonal, congruence, det3, norm2, rigid_inverse,
-    rigid_placement, rotation_numerator, Mat3, Mat4,
+    affine_inverse, affine_placement, body_diagonal, congruence, det3, integral, norm2,
+    rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
 };
 use std::sync::OnceLock;
 
@@ -112,6 +112,14 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
         center,
         w,
     };
+    for (points, weights) in motion.curve_shapes() {
+        if points == 0 || weights.is_some_and(|w| w != points) {
+            return Err(MotionError::MalformedCurve {
+                points,
+                weights: weights.unwrap_or(points),
+            });
+        }
+    }
     let check_weight = |w: &QPoly| match first_root_in_span(w.prim(), span) {
         Some(at) => Err(MotionError::WeightVanishes { at }),
         None => Ok(()),
@@ -186,10 +194,9 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
 }
 
 fn quaternion_curve(curve: &Bezier<Quat>) -> [QPoly; 4] {
-    std::array::from_fn(|k| {
-        let vals: Vec<Rat> = curve.points.iter().map(|q| q[k].clone()).collect();
-        bernstein_to_power(&vals)
-    })
+    // The rotation of q is that of any positive multiple, so the weight
+    // curve's denominator drops out; the weights stay in the numerators.
+    to_poly_curve(curve).numerators
 }
 
 /// The matrix over ℚ[u] times the positive rational that makes its entries
@@ -208,9 +215,10 @@ fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
     })
 }
 
+/// `v` times the lcm of its denominators.
 fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
     let den = v.iter().fold(Int::one(), |l, r| l.lcm(r.denom()));
-    std::array::from_fn(|i| (&Rat::from_int(den.clone()) * &v[i]).floor())
+    v.each_ref().map(|x| x.numer() * &den.div_exact(x.denom()))
 }
 
 /// A placed body: its placement, its body quadric and what is known about
@@ -260,11 +268,7 @@ impl PlacedQuadric {
     /// The quadric at one parameter `u`, exactly, scaled to integers (a
     /// positive multiple of `A(u)`), from the placement's values there.
     pub fn quadric_at(&self, u: &Rat) -> Mat4<Int> {
-        let n = self.frame.map(|p| p.eval_rat(u)).inverse();
-        let flat: [Rat; 16] = std::array::from_fn(|k| n[k / 4][k % 4].clone());
-        let ints = rat_vec_to_int(&flat);
-        let n: Mat4<Int> =
-            std::array::from_fn(|i| std::array::from_fn(|j| ints[4 * i + j].clone()));
+        let n = integral(&self.frame.map(|p| p.eval_rat(u)).inverse());
         congruence(&n, &self.diagonal.each_ref().map(|e| e.coeff(0)))
     }
 }
@@ -295,4 +299,66 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
 /// solver) or is not rational.
 pub fn moving_quadric(body: &Body, span: &[Rat; 2]) -> Result<Mat4<ZPoly>, MotionError> {
     Ok(placed_quadric(body, span)?.quadric())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(v: [i64; 4]) -> Quat {
+        v.map(Rat::from)
+    }
+
+    fn rigid(orientation: Bezier<Quat>) -> Body {
+        Body {
+            radii: [3, 2, 1].map(Rat::from),
+            motion: Motion::Rigid {
+                orientation,
+                center: Bezier::constant([1, 0, 0].map(Rat::from)),
+            },
+        }
+    }
+
+    #[test]
+    fn quaternion_weights_scale_the_control_points() {
+        // Weights (1, 3) on (q0, q1) give the curve (q0·B0 + 3q1·B1)/w: the
+        // rotation of the unweighted curve through q0 and 3·q1.
+        let span = [Rat::zero(), Rat::one()];
+        let weighted = rigid(Bezier {
+            points: vec![q([1, 0, 0, 0]), q([1, 0, 1, 1])],
+            weights: Some(vec![Rat::one(), Rat::from(3)]),
+        });
+        let scaled = rigid(Bezier {
+            points: vec![q([1, 0, 0, 0]), q([3, 0, 3, 3])],
+            weights: None,
+        });
+        assert_eq!(
+            moving_quadric(&weighted, &span).unwrap(),
+            moving_quadric(&scaled, &span).unwrap()
+        );
+    }
+
+    #[test]
+    fn malformed_curves_are_errors() {
+        let span = [Rat::zero(), Rat::one()];
+        let short = rigid(Bezier {
+            points: vec![q([1, 0, 0, 0]), q([1, 0, 1, 1])],
+            weights: Some(vec![Rat::one()]),
+        });
+        assert!(matches!(
+            placed_quadric(&short, &span),
+            Err(MotionError::MalformedCurve {
+                points: 2,
+                weights: 1
+            })
+        ));
+        let empty = rigid(Bezier {
+            points: vec![],
+            weights: None,
+        });
+        assert!(matches!(
+            placed_quadric(&empty, &span),
+            Err(MotionError::MalformedCurve { points: 0, .. })
+        ));
+    }
 }

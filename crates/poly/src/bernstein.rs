@@ -46,7 +46,12 @@ pub struct Bernstein {
 }
 
 /// `C(n, 0), …, C(n, n)`.
-pub(crate) fn binomials(n: usize) -> Vec<Int> {
+///
+/// ```
+/// use ccd_arith::Int;
+/// assert_eq!(ccd_poly::binomials(3), [1, 3, 3, 1].map(Int::from));
+/// ```
+pub fn binomials(n: usize) -> Vec<Int> {
     let mut row = Vec::with_capacity(n + 1);
     let mut c = Int::one();
     for i in 0..=n {
@@ -107,7 +112,7 @@ fn times_binomials(beta: &[Int]) -> Vec<Int> {
 /// Reverse, Taylor shift by `s`, reverse (fixed length `n + 1`): maps the
 /// power coefficients of `P` to `c_i = C(n,i) b_i` for `s = 1`, and back
 /// for `s = −1`.
-fn reverse_shift_reverse(mut v: Vec<Int>, s: i64) -> Vec<Int> {
+pub(crate) fn reverse_shift_reverse(mut v: Vec<Int>, s: i64) -> Vec<Int> {
     v.reverse();
     taylor_shift_in_place(&mut v, &Int::from(s));
     v.reverse();

@@ -23,7 +23,7 @@ mod prime;
 mod qpoly;
 mod zpoly;
 
-pub use bernstein::Bernstein;
+pub use bernstein::{binomials, Bernstein};
 pub use qpoly::QPoly;
 pub use zpoly::ZPoly;
 

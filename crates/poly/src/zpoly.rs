@@ -359,6 +359,24 @@ impl ZPoly {
     pub fn eval_homogeneous_with_derivative(&self, x: &Rat) -> (Int, Int) {
         hom_horner_with_derivative(&self.c, x.numer(), x.denom())
     }
+    /// The integers `C(n, i)·bᵢ` for the Bernstein coefficients `bᵢ` of `p`
+    /// over `[0, 1]` in degree `n = deg p` (`[0]` for the zero polynomial):
+    /// reverse, Taylor shift by 1, reverse, at fixed length — additions
+    /// only, no rounding, no gcd.
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// use ccd_poly::ZPoly;
+    /// // 2 + t = 2·B₀ + 3·B₁; t² = B₂ (its zero constant term is kept).
+    /// assert_eq!(ZPoly::from_i64s(&[2, 1]).scaled_bernstein(), [2, 3].map(Int::from));
+    /// assert_eq!(ZPoly::from_i64s(&[0, 0, 1]).scaled_bernstein(), [0, 0, 1].map(Int::from));
+    /// ```
+    pub fn scaled_bernstein(&self) -> Vec<Int> {
+        if self.c.is_empty() {
+            return vec![Int::zero()];
+        }
+        crate::bernstein::reverse_shift_reverse(self.c.clone(), 1)
+    }
     /// Whether `x` passes the rational root theorem for `p = Σ cᵢ tⁱ`: a
     /// root `a/b` in lowest terms has `b | c_n` and `a | c_0`. `false` proves
     /// `p(x) ≠ 0` with two divisibility tests instead of an evaluation.

@@ -1,10 +1,10 @@
 //! Static ellipsoids with exact data and the static classifier
 //! (Theorem 3.10 / Table 2).
 
-use crate::matrix::{characteristic, congruence, Mat4};
+use crate::matrix::{characteristic, congruence, integral, Mat4};
 use crate::placement::{body_diagonal, norm2, rigid_inverse, rotation_numerator};
 use ccd_arith::{Int, Rat, RingOps};
-use ccd_subres::{classify_with, closed_forms, sign_variations, Configuration, Quantity};
+use ccd_subres::{classify, closed_forms, Configuration, SignData};
 
 /// An ellipsoid placed in space: semi-axes along its body axes, a centre,
 /// and an orientation quaternion `[w, x, y, z]` (any nonzero quaternion).
@@ -41,29 +41,15 @@ impl Ellipsoid {
     /// [`Ellipsoid::quadric_matrix`] times the positive integer that clears
     /// its denominators: the form the exact tests compute with.
     pub fn quadric_matrix_int(&self) -> Mat4<Int> {
-        let m = self.quadric_matrix();
-        let den = m.iter().flatten().fold(Int::one(), |l, x| {
-            (&l * x.denom()).div_exact(&l.gcd(x.denom()))
-        });
-        m.map(|row| row.map(|x| x.numer() * &den.div_exact(x.denom())))
+        integral(&self.quadric_matrix())
     }
 }
 
 /// Classifies the characteristic quartic `[e, a, b, c, d]` (high → low) of
-/// two ellipsoids by Theorem 3.10, computing the closed forms of Section 4
-/// only as the decision asks for them. `sign` is the ring's sign function.
+/// two ellipsoids by Theorem 3.10 from the signs of the closed forms of
+/// Section 4. `sign` is the ring's sign function.
 pub fn classify_quartic<R: RingOps>(f: &[R; 5], sign: impl Fn(&R) -> i32) -> Configuration {
-    let inv = closed_forms(f);
-    let answer = classify_with(|q| {
-        Ok::<i32, std::convert::Infallible>(match q {
-            Quantity::Var => sign_variations(&f.each_ref().map(&sign)) as i32,
-            other => sign(inv.get(other).unwrap_or(&R::zero())),
-        })
-    });
-    match answer {
-        Ok(c) => c,
-        Err(never) => match never {},
-    }
+    classify(&SignData::from_invariants(&closed_forms(f), f, sign))
 }
 
 /// Separate, externally touching or overlapping, decided exactly

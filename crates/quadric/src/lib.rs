@@ -11,7 +11,9 @@ mod placement;
 
 pub use ccd_subres::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
-pub use matrix::{adj3, characteristic, congruence, det3, det4, placed_characteristic, Mat3, Mat4};
+pub use matrix::{
+    adj3, characteristic, congruence, det3, det4, integral, placed_characteristic, Mat3, Mat4,
+};
 pub use placement::{
     affine_inverse, affine_placement, body_diagonal, norm2, rigid_inverse, rigid_placement,
     rotation_numerator,

@@ -2,7 +2,7 @@
 //! a body quadric into a placed one, determinants by 2×2 minors, and the
 //! characteristic quartic `det(λA + B)`.
 
-use ccd_arith::RingOps;
+use ccd_arith::{Int, Rat, RingOps};
 
 /// A 4×4 matrix, row-major.
 pub type Mat4<R> = [[R; 4]; 4];
@@ -39,6 +39,27 @@ fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
     m[r][i]
         .times(&m[r + 1][j])
         .minus(&m[r][j].times(&m[r + 1][i]))
+}
+
+/// `m` times the lcm of its entries' denominators: the same quadric (a
+/// positive multiple), in integers, which `det(λA + B)` computes with far
+/// more cheaply than with rationals.
+///
+/// ```
+/// use ccd_arith::{Int, Rat};
+/// use ccd_quadric::integral;
+/// let mut m: [[Rat; 4]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| Rat::zero()));
+/// m[0][0] = Rat::from_frac(1, 4);
+/// m[3][3] = Rat::from_frac(-1, 6);
+/// let n = integral(&m);
+/// assert_eq!((n[0][0].clone(), n[3][3].clone()), (Int::from(3), Int::from(-2)));
+/// ```
+pub fn integral(m: &Mat4<Rat>) -> Mat4<Int> {
+    let den = m.iter().flatten().fold(Int::one(), |l, x| l.lcm(x.denom()));
+    m.each_ref().map(|row| {
+        row.each_ref()
+            .map(|x| x.numer() * &den.div_exact(x.denom()))
+    })
 }
 
 /// Columns `(i, j)` of a top 2×2 minor, `(k, l)` of the complementary

@@ -20,7 +20,7 @@
 //! fraction of the cost: no directed rounding, no `next_up`/`next_down`.
 
 use ccd_arith::{Int, Interval, Rat};
-use ccd_poly::ZPoly;
+use ccd_poly::{binomials, ZPoly};
 
 /// Largest bit length kept in front of the binary point after scaling.
 const TARGET_BITS: i64 = 900;
@@ -101,18 +101,20 @@ impl FloatBernstein {
         } else {
             p.compose_affine(lo, &(hi - lo))
         };
-        let c = q.reverse().taylor_shift(&Int::one()).reverse();
-        if c.degree() != Some(n) || c.coeff(0).is_zero() {
+        let c = q.scaled_bernstein();
+        // The ends are p(lo), p(hi) (times positive factors).
+        if c[0].is_zero() || c[n].is_zero() {
             return None;
         }
-        let max_bits = c.max_bits() as i64;
+        let max_bits = c.iter().map(Int::bits).max().unwrap_or(0) as i64;
         let shift = (max_bits - TARGET_BITS).max(0);
-        let mut binom = Int::one();
-        let mut iv = Vec::with_capacity(n + 1);
-        for (i, ci) in c.coeffs().iter().enumerate() {
-            iv.push(Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&binom)));
-            binom = (&binom * &Int::from((n - i) as i64)).div_exact(&Int::from((i + 1) as i64));
-        }
+        let iv: Vec<Interval> = c
+            .iter()
+            .zip(binomials(n))
+            .map(|(ci, b)| {
+                Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&b))
+            })
+            .collect();
         let fb = FloatBernstein::from_intervals(&iv);
         fb.signs().map(|_| fb)
     }

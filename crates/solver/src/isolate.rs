@@ -15,7 +15,7 @@
 //! integers, and stays exact while its signs need it.
 
 use crate::float_bernstein::FloatBernstein;
-use crate::root::{RealRoot, RootPoly};
+use crate::root::{RealRoot, SignProbe};
 use ccd_arith::Rat;
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
@@ -127,13 +127,13 @@ impl Node {
 /// The real roots of a squarefree polynomial in a closed interval, isolated
 /// lazily in increasing order. Built by [`crate::isolate`].
 pub struct RootIter {
-    base: Arc<RootPoly>,
+    base: Arc<SignProbe>,
     stack: Vec<Item>,
 }
 
 impl RootIter {
     /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
-    pub(crate) fn new(base: Arc<RootPoly>, lo: &Rat, hi: &Rat) -> RootIter {
+    pub(crate) fn new(base: Arc<SignProbe>, lo: &Rat, hi: &Rat) -> RootIter {
         let poly = base.poly();
         let (first, last) = (poly.sign_at(lo), poly.sign_at(hi));
         let mut stack = Vec::new();

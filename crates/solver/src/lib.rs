@@ -23,7 +23,6 @@ mod root;
 mod scaled;
 
 pub use isolate::RootIter;
-use root::RootPoly;
 pub use root::{RealRoot, SignModel, SignProbe};
 pub use scaled::ScaledPoly;
 
@@ -54,14 +53,11 @@ pub fn isolate(p: &ZPoly, lo: &Rat, hi: &Rat) -> Result<RootIter, SolverError> {
         return Err(SolverError::EmptyInterval);
     }
     let sf = p.squarefree_part();
-    Ok(RootIter::new(RootPoly::new(sf), lo, hi))
+    Ok(RootIter::new(SignProbe::shared(sf), lo, hi))
 }
 
 /// `true` when `p` has a root in `[lo, hi]` (exactly decided).
 pub fn has_root_in(p: &ZPoly, lo: &Rat, hi: &Rat) -> Result<bool, SolverError> {
-    if p.degree() == Some(0) {
-        return Ok(false);
-    }
     Ok(isolate(p, lo, hi)?.next().is_some())
 }
 

@@ -5,35 +5,14 @@
 use crate::scaled::ScaledPoly;
 use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
-use std::sync::{Arc, OnceLock};
-
-/// The squarefree polynomial behind a family of [`RealRoot`]s, with the
-/// views of it that refinement needs, formed once on first use and shared
-/// by every root of the family (all the roots one isolation yields).
-#[derive(Debug)]
-pub(crate) struct RootPoly {
-    poly: ZPoly,
-    /// Its `f64` view, for filtered signs and Newton guesses.
-    approx: OnceLock<ScaledPoly>,
-}
-
-impl RootPoly {
-    pub(crate) fn new(poly: ZPoly) -> Arc<RootPoly> {
-        Arc::new(RootPoly {
-            poly,
-            approx: OnceLock::new(),
-        })
-    }
-
-    pub(crate) fn poly(&self) -> &ZPoly {
-        &self.poly
-    }
-}
+use std::sync::Arc;
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
 /// ([`RealRoot::sign_with`]): with its `f64` view (one conversion of every
 /// coefficient), formed once; a caller that asks for the sign of the same
-/// `q` at several roots should build it once.
+/// `q` at several roots should build it once. The roots themselves keep
+/// their squarefree polynomial this way too, shared by every root one
+/// isolation yields.
 #[derive(Clone, Debug)]
 pub struct SignProbe {
     q: ZPoly,
@@ -43,10 +22,35 @@ pub struct SignProbe {
 impl SignProbe {
     /// Prepares `q`.
     pub fn new(q: &ZPoly) -> SignProbe {
+        SignProbe::of(q.clone())
+    }
+
+    fn of(q: ZPoly) -> SignProbe {
         SignProbe {
-            q: q.clone(),
-            sq: ScaledPoly::new(q),
+            sq: ScaledPoly::new(&q),
+            q,
         }
+    }
+
+    /// A root family's polynomial.
+    pub(crate) fn shared(q: ZPoly) -> Arc<SignProbe> {
+        Arc::new(SignProbe::of(q))
+    }
+
+    /// The polynomial.
+    pub(crate) fn poly(&self) -> &ZPoly {
+        &self.q
+    }
+
+    /// `q(m)` and `q′(m)` on the `f64` view's scale, from the homogeneous
+    /// values `H = 2^(k·n)·q(m)`, `H′ = 2^(k·(n−1))·q′(m)` at `m = a/2^k`.
+    fn scaled_at_dyadic(&self, h: &Int, dh: &Int, k: i64) -> (Interval, Interval) {
+        let n = self.q.degree().unwrap_or(0) as i64;
+        let shift = self.sq.shift();
+        (
+            Interval::from_int_scaled(h, shift + k * n),
+            Interval::from_int_scaled(dh, shift + k * (n - 1).max(0)),
+        )
     }
 }
 
@@ -81,16 +85,21 @@ impl SignModel for SignProbe {
     fn enclose_second(&self, x: Interval) -> Interval {
         self.sq.enclose_derivative(2, x)
     }
-    /// `q(m) = H/2^(k·n)` and `q′(m) = H′/2^(k·(n−1))` for `m = a/2^k`,
-    /// both exact from one Horner pass, then scaled like the `f64` view.
+    /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
+    /// from one Horner pass, then scaled like the `f64` view: by shifts at
+    /// a dyadic `m` (the solver's case), by an enclosed division otherwise.
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
-        let k = m.dyadic_exponent().expect("a dyadic point") as i64;
-        let n = self.q.degree().unwrap_or(0) as i64;
         let (qm, dqm) = self.q.eval_homogeneous_with_derivative(m);
-        (
-            Interval::from_int_scaled(&qm, self.sq.shift() + k * n),
-            Interval::from_int_scaled(&dqm, self.sq.shift() + k * (n - 1).max(0)),
-        )
+        if let Some(k) = m.dyadic_exponent() {
+            return self.scaled_at_dyadic(&qm, &dqm, k as i64);
+        }
+        let n = self.q.degree().unwrap_or(0) as u32;
+        let b = m.denom();
+        let over = |h: &Int, e: u32| {
+            Interval::from_int_scaled(h, self.sq.shift())
+                .div_positive(Interval::from_int(&b.pow(e)))
+        };
+        (over(&qm, n), over(&dqm, n.saturating_sub(1)))
     }
     fn sign_at(&self, x: &Rat) -> i32 {
         self.q.sign_at(x)
@@ -106,7 +115,7 @@ impl SignModel for SignProbe {
 /// signs.
 #[derive(Clone, Debug)]
 pub struct RealRoot {
-    base: Arc<RootPoly>,
+    base: Arc<SignProbe>,
     lo: Rat,
     hi: Rat,
     /// Sign of `p(lo)`; 0 when the root is exact.
@@ -114,7 +123,7 @@ pub struct RealRoot {
 }
 
 impl RealRoot {
-    pub(crate) fn exact(base: Arc<RootPoly>, at: Rat) -> RealRoot {
+    pub(crate) fn exact(base: Arc<SignProbe>, at: Rat) -> RealRoot {
         RealRoot {
             base,
             lo: at.clone(),
@@ -123,7 +132,7 @@ impl RealRoot {
         }
     }
 
-    pub(crate) fn isolated(base: Arc<RootPoly>, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot {
+    pub(crate) fn isolated(base: Arc<SignProbe>, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot {
         debug_assert!(sign_lo != 0 && lo < hi);
         RealRoot {
             base,
@@ -143,7 +152,7 @@ impl RealRoot {
     }
     /// The squarefree polynomial this is a root of.
     pub fn poly(&self) -> &ZPoly {
-        &self.base.poly
+        &self.base.q
     }
     /// The rational value when the root is known exactly.
     pub fn exact_value(&self) -> Option<&Rat> {
@@ -159,9 +168,7 @@ impl RealRoot {
     }
 
     fn scaled(&self) -> &ScaledPoly {
-        self.base
-            .approx
-            .get_or_init(|| ScaledPoly::new(&self.base.poly))
+        &self.base.sq
     }
 
     /// Moves one end to `x` (strictly inside) according to `s`, the exact
@@ -190,7 +197,7 @@ impl RealRoot {
     /// exact evaluation otherwise.
     fn sign_of_p_at(&self, x: &Rat) -> i32 {
         self.float_sign_of_p_at(x)
-            .unwrap_or_else(|| self.base.poly.sign_at(x))
+            .unwrap_or_else(|| self.base.q.sign_at(x))
     }
 
     /// Halves the enclosure (one sign evaluation).
@@ -284,19 +291,18 @@ impl RealRoot {
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let j = m.dyadic_exponent().expect("dyadic_in is dyadic");
         let base = self.base.clone();
-        let (pm, dpm) = base.poly.eval_homogeneous_with_derivative(&m);
+        let (pm, dpm) = base.q.eval_homogeneous_with_derivative(&m);
         if dpm.is_zero() {
             return false;
         }
-        let sp = self.scaled();
-        let shift = sp.shift();
-        let n = base.poly.degree().unwrap_or(0) as i64;
-        let second = sp.enclose_derivative(2, self.enclosure());
+        let shift = base.sq.shift();
+        let n = base.q.degree().unwrap_or(0) as i64;
+        let second = base.sq.enclose_derivative(2, self.enclosure());
         // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
         // cut δ from the root has a linear part near |p′|·δ: cuts closer
         // than `reach` would need exact evaluations, so when the model
         // reaches well inside the enclosure the cuts go no closer.
-        let slope = Interval::from_int_scaled(&dpm, shift + j as i64 * (n - 1).max(0));
+        let (_, slope) = base.scaled_at_dyadic(&pm, &dpm, j as i64);
         let w_f = w.to_f64();
         let reach =
             second.lo.abs().max(second.hi.abs()) * w_f * w_f / slope.lo.abs().min(slope.hi.abs());
@@ -325,7 +331,7 @@ impl RealRoot {
                 value
                     .sign()
                     .filter(|s| *s != 0)
-                    .unwrap_or_else(|| root.base.poly.sign_at(x)),
+                    .unwrap_or_else(|| root.base.q.sign_at(x)),
             )
         };
         self.cut_both(
@@ -367,8 +373,8 @@ impl RealRoot {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
                 && s != self.hi
-                && self.base.poly.admits_rational_root(&s)
-                && self.base.poly.sign_at(&s) == 0
+                && self.base.q.admits_rational_root(&s)
+                && self.base.q.sign_at(&s) == 0
             {
                 self.lo = s.clone();
                 self.hi = s;
@@ -430,7 +436,7 @@ impl RealRoot {
             }
             if !zero_checked && (round >= 1 || qm.contains_zero()) {
                 zero_checked = true;
-                let g = self.base.poly.gcd(model.exact());
+                let g = self.base.q.gcd(model.exact());
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
                     return 0;
                 }

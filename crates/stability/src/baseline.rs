@@ -14,7 +14,7 @@ use ccd_exact::{Scene, State};
 use ccd_motion::{Bezier, Body, Motion};
 use ccd_quadric::{
     affine_inverse, body_diagonal, characteristic, classify_pair, classify_quartic, congruence,
-    Ellipsoid, Mat4,
+    integral, Ellipsoid, Mat4,
 };
 
 /// De Casteljau at `u` over ℚ, coordinate-wise, with optional weights:
@@ -98,17 +98,6 @@ fn place(body: &Body, u: &Rat) -> Result<Placed, StabilityError> {
         }
         Motion::Helical { .. } => return Err(StabilityError::Unsupported("helical")),
     })
-}
-
-/// `m` times the positive integer (the lcm of its denominators) that
-/// makes it integral: the same quadric, and integer arithmetic is much
-/// cheaper than rational in `det(λA + B)`.
-fn integral(m: &Mat4<Rat>) -> Mat4<Int> {
-    let den = m.iter().flatten().fold(Int::one(), |l, x| {
-        (&l * x.denom()).div_exact(&l.gcd(x.denom()))
-    });
-    m.clone()
-        .map(|row| row.map(|x| x.numer() * &den.div_exact(x.denom())))
 }
 
 /// The exact static state of the scene at `u ∈ [0, 1]` (`t = t0 + u·(t1 − t0)`).
