@@ -9,7 +9,7 @@ use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
-use ccd_solver::RealRoot;
+use ccd_solver::{RealRoot, RootIter, SignModel};
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
@@ -60,7 +60,11 @@ fn state_at(f: &CharPoly, u: &Rat) -> State {
 /// Is the configuration at the algebraic instant `root` an external touch?
 /// Theorem 3.10(2), with the signs decided exactly at the root; `zero` lists
 /// quantities known to vanish there (the polynomial the root came from).
-fn touches_at(root: &mut RealRoot, f: &Coefficients, zero: &[Quantity]) -> bool {
+fn touches_at<M: SignModel + Clone>(
+    root: &mut RealRoot<M>,
+    f: &Coefficients,
+    zero: &[Quantity],
+) -> bool {
     struct NotTouch;
     let answer = classify_with(|q| {
         if zero.contains(&q) {
@@ -146,6 +150,35 @@ fn candidates<'a>(
     }
 }
 
+/// The contact instants among the roots `roots` yields, in order (up to
+/// the first with `first_contact_only`), refined to `width`; `None` if a
+/// filter-only isolation could not prove a sign before that point.
+fn contacts_at<M: SignModel + Clone>(
+    mut roots: RootIter<M>,
+    coefficients: &Coefficients,
+    zeros: &[Quantity],
+    width: &Rat,
+    opts: &Options,
+    stats: &mut Stats,
+) -> Option<Vec<Instant>> {
+    let mut contacts = vec![];
+    for mut root in roots.by_ref() {
+        stats.candidates += 1;
+        if touches_at(&mut root, coefficients, zeros) {
+            root.refine_to(width);
+            contacts.push(Instant {
+                lo: root.lo().clone(),
+                hi: root.hi().clone(),
+                certified: true,
+            });
+            if opts.first_contact_only {
+                return Some(contacts);
+            }
+        }
+    }
+    (!roots.undecided()).then_some(contacts)
+}
+
 /// Runs Algorithm 1 on a rational scene.
 pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     let (a, b) = placed(scene)?;
@@ -176,12 +209,8 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     }
     let f = CharPoly::from_placed(&a, &b);
     let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
-    // sr0 as a polynomial; the other closed forms only as signs at its
-    // roots (crate::signs).
     let coefficients = Coefficients::new(&f.coeffs);
-    let sr0 = coefficients.polynomial(Quantity::Sr0);
     stats.deg_f = f.degree();
-    stats.deg_sr0 = sr0.degree();
     let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");
     let mut found = Findings {
         state0,
@@ -190,28 +219,58 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    match candidates(&f, sr0, &coefficients, state0, &mut stats) {
-        Candidates::Throughout(state) => found.throughout = Some(state),
-        Candidates::Roots(poly, zeros) => {
-            stats.deg_candidates = poly.degree();
-            let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
-                .map_err(|e| CcdError::Internal(e.to_string()))?;
-            for mut root in roots {
-                stats.candidates += 1;
-                if touches_at(&mut root, &coefficients, zeros) {
-                    root.refine_to(&width);
-                    found.contacts.push(Instant {
-                        lo: root.lo().clone(),
-                        hi: root.hi().clone(),
-                        certified: true,
-                    });
-                    if opts.first_contact_only {
-                        found.complete = false;
-                        break;
-                    }
+    // The roots of sr0 from its certified f64 Bernstein coefficients, sr0
+    // itself never formed (crate::signs); the exact polynomial only where
+    // that filter cannot prove a sign.
+    let filtered = RootIter::filtered(
+        coefficients.model(Quantity::Sr0),
+        &Rat::zero(),
+        &Rat::one(),
+        &ccd_float::certified_bernstein(&f, Quantity::Sr0),
+    );
+    let mut filtered_stats = Stats {
+        branch: "sr0",
+        deg_sr0: coefficients.sr0_degree(),
+        ..stats.clone()
+    };
+    filtered_stats.deg_candidates = filtered_stats.deg_sr0;
+    let zeros = [Quantity::Sr0];
+    let contacts = match contacts_at(
+        filtered,
+        &coefficients,
+        &zeros,
+        &width,
+        opts,
+        &mut filtered_stats,
+    ) {
+        Some(contacts) => {
+            stats = filtered_stats;
+            Some(contacts)
+        }
+        None => {
+            // sr0 as a polynomial; the other closed forms only as signs at
+            // its roots (crate::signs).
+            let sr0 = coefficients.polynomial(Quantity::Sr0);
+            stats.deg_sr0 = sr0.degree();
+            match candidates(&f, sr0, &coefficients, state0, &mut stats) {
+                Candidates::Throughout(state) => {
+                    found.throughout = Some(state);
+                    None
+                }
+                Candidates::Roots(poly, zeros) => {
+                    stats.deg_candidates = poly.degree();
+                    let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
+                        .map_err(|e| CcdError::Internal(e.to_string()))?;
+                    let exact = contacts_at(roots, &coefficients, zeros, &width, opts, &mut stats);
+                    Some(exact.expect("exact isolation decides every sign"))
                 }
             }
         }
+    };
+    if let Some(contacts) = contacts {
+        // First contact only: the timeline stops at the one found.
+        found.complete = !opts.first_contact_only || contacts.is_empty();
+        found.contacts = contacts;
     }
     found.into_outcome(&scene.span, stats, |u| match state_at(&f, u) {
         State::Touch => Err(CcdError::Internal(format!(

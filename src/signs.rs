@@ -24,7 +24,7 @@
 
 use ccd_arith::{Dual, Int, Interval, Rat, RingOps};
 use ccd_poly::ZPoly;
-use ccd_solver::{ScaledPoly, SignModel};
+use ccd_solver::{ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, Quantity};
 use std::cell::RefCell;
 use std::sync::OnceLock;
@@ -78,6 +78,34 @@ impl<'a> Coefficients<'a> {
             .get_or_init(|| closed_form(self.coeffs, q).expect("a closed form, not Var"))
     }
 
+    /// The coefficient of `t^(i·w)` in the closed form `q` of weight `w`,
+    /// for `i = 0` (its constant term `q(0)`) or `i = n` (its nominal top
+    /// coefficient): `q` is homogeneous of degree `w` in the `f_k`, so these
+    /// are `q` of the `f_k`'s coefficients of `t^i`.
+    fn extreme_coefficient(&self, q: Quantity, i: usize) -> Int {
+        let c: [Int; 5] = std::array::from_fn(|k| {
+            self.coeffs[k]
+                .coeffs()
+                .get(i)
+                .cloned()
+                .unwrap_or_else(Int::zero)
+        });
+        closed_form(&c, q).expect("a closed form, not Var")
+    }
+
+    /// `deg sr0` (`None` when `sr0 ≡ 0`), without forming `sr0` when its
+    /// nominal top coefficient (of `t^(6n)`) is nonzero.
+    pub(crate) fn sr0_degree(&self) -> Option<usize> {
+        if self
+            .extreme_coefficient(Quantity::Sr0, self.degree)
+            .is_zero()
+        {
+            self.polynomial(Quantity::Sr0).degree()
+        } else {
+            Some(6 * self.degree)
+        }
+    }
+
     /// The sign model of `q` (not [`Quantity::Var`]).
     pub(crate) fn model(&self, q: Quantity) -> ClosedForm<'_, 'a> {
         ClosedForm { f: self, q }
@@ -107,6 +135,7 @@ fn weight(q: Quantity) -> i64 {
 
 /// The closed form `q` of `f`'s coefficients as a [`SignModel`], with
 /// `σ = 2^(−shift·w)`.
+#[derive(Clone, Copy)]
 pub(crate) struct ClosedForm<'c, 'a> {
     f: &'c Coefficients<'a>,
     q: Quantity,
@@ -181,23 +210,53 @@ impl ClosedForm<'_, '_> {
 }
 
 impl SignModel for ClosedForm<'_, '_> {
+    /// The closed form over `f64` intervals of `f_k(X)` (the derivatives
+    /// only if [`SignModel::enclose_second`] already needed them there).
     fn enclose(&self, x: Interval) -> Interval {
-        self.of(&self.box_jets(x).map(|jet| jet.v.v))
+        if let Some((at, jets)) = &*self.f.last_box.borrow() {
+            if *at == x {
+                return self.of(&jets.each_ref().map(|jet| jet.v.v));
+            }
+        }
+        self.of(&std::array::from_fn(|k| self.f.views[k].enclose(x)))
     }
 
     fn enclose_second(&self, x: Interval) -> Interval {
         self.of(&self.box_jets(x)).d.d
     }
 
-    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
+    fn exact_jet_at(&self, m: &Rat) -> ExactJet {
         let j = m.dyadic_exponent().expect("a dyadic point") as i64;
         let w = weight(self.q);
         let q = self.of(&self.jets(m));
         let scale = j * self.f.degree as i64 * w + self.f.shift * w;
-        (
-            Interval::from_int_scaled(&q.v, scale),
-            Interval::from_int_scaled(&q.d, scale),
-        )
+        ExactJet {
+            value: q.v,
+            slope: q.d,
+            value_exp: scale,
+            slope_exp: scale,
+        }
+    }
+
+    /// The closed form over `f64` dual numbers of `(f_k, f_k′)(x)`.
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        let q = self.of(&std::array::from_fn(|k| {
+            let (v, d) = self.f.views[k].value_and_slope(x);
+            Dual { v, d }
+        }));
+        (q.v, q.d)
+    }
+
+    /// The rational root theorem on `q`'s constant term and nominal top
+    /// coefficient (a zero one, i.e. a lower degree, tells nothing).
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        let first = self.f.extreme_coefficient(self.q, 0);
+        if x.numer().is_zero() {
+            return first.is_zero();
+        }
+        let last = self.f.extreme_coefficient(self.q, self.f.degree);
+        (last.is_zero() || last.is_divisible_by(x.denom()))
+            && (first.is_zero() || first.is_divisible_by(x.numer()))
     }
 
     fn sign_at(&self, x: &Rat) -> i32 {

@@ -31,13 +31,30 @@
 //! pointwise on `[0, 1]`, the terms whose rounding errors make up the error
 //! of the value. [`BernsteinF64::is_negligible`] compares against it.
 //!
+//! # Proven error bounds
+//! Each polynomial also carries `N`, the largest number of roundings along
+//! any path from an input to a coefficient, and `A`, a bound on what
+//! underflow can add. Expanding a computation into terms, each term of the
+//! value carries at most `N` factors `(1 + δ)`, `|δ| ≤ u = 2^(−53)`, and the
+//! magnitude is the sum of the terms' absolute values, so
+//! `|p̃_i − exact_i| ≤ γ_N·mag_i + A` with `γ_N = N·u/(1 − N·u)` (Higham,
+//! *Accuracy and Stability of Numerical Algorithms*, §3.1); the computed
+//! magnitude is itself within `γ_N` of the exact one. The counts: an input
+//! carries two roundings (its 64 leading bits, then `f64`); a product of
+//! coefficient sequences of lengths `l, m` adds `min(l, m)` (one product,
+//! then a running sum); a sum adds one; division by a small integer one;
+//! binomial rows are exact up to `n = 50` and carry `2n` roundings beyond.
+//! [`BernsteinF64::enclosures`] turns this into certified intervals of the
+//! ordinary Bernstein coefficients: the exact path's filter for `sr0`.
+//!
 //! # Limits
 //! Scaled coefficients carry the factor `C(n, i)`, at most `C(n, n/2)`;
 //! `f64` holds that up to `n ≈ 1000`, far above the degree 288 of `sr0` for
 //! degree-4 affine motions (Table 3).
 
 use crate::approx::Approx;
-use ccd_arith::RingOps;
+use ccd_arith::{Interval, RingOps};
+use ccd_poly::binomials;
 
 /// An `f64` polynomial on `[0, 1]` in scaled Bernstein form, with
 /// magnitudes (module docs).
@@ -58,6 +75,35 @@ pub struct BernsteinF64 {
     val: Vec<f64>,
     /// Scaled coefficients of the magnitude (all ≥ 0).
     mag: Vec<f64>,
+    /// Roundings along any path to a coefficient (module docs).
+    rounds: u64,
+    /// What underflow can add to any coefficient (module docs).
+    tiny: f64,
+}
+
+/// `2^(−1074)`: the most one underflowing product can lose.
+const ETA: f64 = f64::from_bits(1);
+
+/// Roundings in `C(n, ·)` from [`binomial_row`].
+fn row_rounds(n: usize) -> u64 {
+    if n <= 50 {
+        0
+    } else {
+        2 * n as u64
+    }
+}
+
+/// Largest entry.
+fn max_of(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |m, &x| m.max(x))
+}
+
+/// The underflow bound of a product of sequences of lengths `l, m` with
+/// magnitudes at most `ma`, `mb` and underflow bounds `ta`, `tb`: each of
+/// at most `min(l, m)` terms `x̂ŷ` is off by `|τ_x|·|ŷ| + |x|·|τ_y|` plus
+/// its own underflow, with `|x| ≤ 3·ma` while `γ_N ≤ 1/2`.
+fn product_tiny(len: usize, ma: f64, ta: f64, mb: f64, tb: f64) -> f64 {
+    2.0 * len as f64 * (ta * (3.0 * mb + tb) + tb * (3.0 * ma + ta) + ETA)
 }
 
 /// `C(n, 0..=n)` in `f64` (exact while the intermediate products stay below
@@ -113,6 +159,7 @@ impl BernsteinF64 {
             return BernsteinF64::zero();
         }
         let n = power.len() - 1;
+        let rounds = row_rounds(n) + n as u64 + 1;
         let mut val = vec![0.0; n + 1];
         let mut mag = vec![0.0; n + 1];
         for (j, &a) in power.iter().enumerate() {
@@ -125,18 +172,63 @@ impl BernsteinF64 {
                 mag[j + m] += c * a.abs();
             }
         }
-        BernsteinF64 { val, mag }
+        BernsteinF64 {
+            tiny: (n + 1) as f64 * ETA,
+            val,
+            mag,
+            rounds,
+        }
     }
 
     /// A polynomial given by its scaled Bernstein coefficients
-    /// `p̃_i = C(n, i)·b_i` (module docs), each known to full `f64`
-    /// precision (so its magnitude is its absolute value).
+    /// `p̃_i = C(n, i)·b_i` (module docs), each within two roundings of its
+    /// exact value (so its magnitude is its absolute value).
     pub fn from_scaled(scaled: Vec<f64>) -> BernsteinF64 {
         if scaled.is_empty() {
             return BernsteinF64::zero();
         }
         let mag = scaled.iter().map(|c| c.abs()).collect();
-        BernsteinF64 { val: scaled, mag }
+        BernsteinF64 {
+            val: scaled,
+            mag,
+            rounds: 2,
+            tiny: ETA,
+        }
+    }
+
+    /// Certified enclosures of the ordinary Bernstein coefficients
+    /// `b_i = p̃_i / C(n, i)` of the exact polynomial this one approximates
+    /// (module docs): `p̃_i ± (γ_N·mag_i·(1 + 2^(−40)) + 3A)`, rounded
+    /// outward, over the exact binomial. Unbounded if the error analysis
+    /// does not apply (`γ_N > 1/2`, or a value that is not finite).
+    pub fn enclosures(&self) -> Vec<Interval> {
+        let u = f64::EPSILON / 2.0;
+        let nu = self.rounds as f64 * u;
+        let whole = Interval {
+            lo: f64::NEG_INFINITY,
+            hi: f64::INFINITY,
+        };
+        if nu >= 0.5 {
+            return vec![whole; self.val.len()];
+        }
+        let gamma = nu / (1.0 - nu) * (1.0 + 2f64.powi(-40));
+        self.val
+            .iter()
+            .zip(&self.mag)
+            .zip(binomials(self.degree()))
+            .map(|((&v, &m), c)| {
+                let e = (gamma * m + 3.0 * self.tiny).next_up();
+                let iv = Interval {
+                    lo: (v - e).next_down(),
+                    hi: (v + e).next_up(),
+                };
+                if iv.lo.is_finite() && iv.hi.is_finite() {
+                    iv.div_positive(Interval::from_int(&c))
+                } else {
+                    whole
+                }
+            })
+            .collect()
     }
 
     /// The nominal degree `n` of the Bernstein form (at least the true
@@ -183,9 +275,12 @@ impl BernsteinF64 {
             return self.clone();
         }
         let row = binomial_row(r);
+        let len = row.len().min(self.val.len());
         BernsteinF64 {
             val: convolve(&self.val, &row),
             mag: convolve(&self.mag, &row),
+            rounds: self.rounds + row_rounds(r) + len as u64,
+            tiny: product_tiny(len, max_of(&row), 0.0, max_of(&self.mag), self.tiny),
         }
     }
 
@@ -212,6 +307,8 @@ impl BernsteinF64 {
                 .map(|(x, y)| x + sign * y)
                 .collect(),
             mag: a.mag.iter().zip(&b.mag).map(|(x, y)| x + y).collect(),
+            rounds: a.rounds.max(b.rounds) + 1,
+            tiny: 2.0 * (a.tiny + b.tiny),
         }
     }
 }
@@ -224,10 +321,7 @@ fn unscale(scaled: &[f64]) -> Vec<f64> {
 
 impl RingOps for BernsteinF64 {
     fn zero() -> Self {
-        BernsteinF64 {
-            val: vec![0.0],
-            mag: vec![0.0],
-        }
+        BernsteinF64::from_i64(0)
     }
     fn one() -> Self {
         BernsteinF64::from_i64(1)
@@ -236,6 +330,8 @@ impl RingOps for BernsteinF64 {
         BernsteinF64 {
             val: vec![v as f64],
             mag: vec![(v as f64).abs()],
+            rounds: 0,
+            tiny: 0.0,
         }
     }
     fn is_zero(&self) -> bool {
@@ -248,15 +344,18 @@ impl RingOps for BernsteinF64 {
         self.add_signed(o, -1.0)
     }
     fn times(&self, o: &Self) -> Self {
+        let len = self.val.len().min(o.val.len());
         BernsteinF64 {
             val: convolve(&self.val, &o.val),
             mag: convolve(&self.mag, &o.mag),
+            rounds: self.rounds + o.rounds + len as u64,
+            tiny: product_tiny(len, max_of(&self.mag), self.tiny, max_of(&o.mag), o.tiny),
         }
     }
     fn negated(&self) -> Self {
         BernsteinF64 {
             val: self.val.iter().map(|c| -c).collect(),
-            mag: self.mag.clone(),
+            ..self.clone()
         }
     }
     fn div_small(&self, k: i64) -> Self {
@@ -264,6 +363,8 @@ impl RingOps for BernsteinF64 {
         BernsteinF64 {
             val: self.val.iter().map(|c| c / k).collect(),
             mag: self.mag.iter().map(|c| c / k.abs()).collect(),
+            rounds: self.rounds + 1,
+            tiny: 2.0 * self.tiny / k.abs() + ETA,
         }
     }
 }

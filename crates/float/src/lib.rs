@@ -66,4 +66,4 @@ pub use bernstein::BernsteinF64;
 pub use ccd_motion::CharPoly;
 pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
 pub use roots::{Candidate, RootKind, Roots, CLUSTER_WIDTH, ROOT_WIDTH};
-pub use setup::{prepare, Prepared};
+pub use setup::{certified_bernstein, prepare, Prepared};

@@ -6,10 +6,10 @@
 
 use crate::approx::Approx;
 use crate::bernstein::BernsteinF64;
-use ccd_arith::Int;
+use ccd_arith::{Int, Interval};
 use ccd_motion::CharPoly;
 use ccd_poly::ZPoly;
-use ccd_subres::{closed_forms, QuarticInvariants};
+use ccd_subres::{closed_form, closed_forms, Quantity, QuarticInvariants};
 
 /// `f(λ; u)` and its `sr` polynomials in `f64` Bernstein form on `[0, 1]`:
 /// everything [`crate::solve_prepared`] reads.
@@ -85,6 +85,19 @@ fn int_to_f64_scaled(x: &Int, shift: i64) -> f64 {
 /// assert!(!p.inv.sr11.is_negligible(1e-10));
 /// ```
 pub fn prepare(f: &CharPoly) -> Prepared {
+    let (coeffs, _) = inputs(f);
+    let inv = closed_forms(&coeffs);
+    Prepared {
+        f: coeffs,
+        inv,
+        deg_f: f.degree(),
+    }
+}
+
+/// `f`'s coefficients, rescaled (see [`prepare`]) and rounded: `c_k`
+/// (the coefficient of `λ^k`) becomes `c_k·2^(j·k − shift)`; returns also
+/// `(j, shift)`.
+fn inputs(f: &CharPoly) -> ([BernsteinF64; 5], (i64, i64)) {
     let scaled: [Vec<Int>; 5] = f.coeffs.each_ref().map(ZPoly::scaled_bernstein);
     let bits = |c: &Vec<Int>| c.iter().map(Int::bits).max().unwrap_or(0) as i64;
     // coeffs[i] is the coefficient of λ^(4 − i).
@@ -100,7 +113,7 @@ pub fn prepare(f: &CharPoly) -> Prepared {
         .map(|i| b[i] + exp(i))
         .max()
         .unwrap_or(0);
-    let coeffs: [BernsteinF64; 5] = std::array::from_fn(|i| {
+    let coeffs = std::array::from_fn(|i| {
         BernsteinF64::from_scaled(
             scaled[i]
                 .iter()
@@ -108,12 +121,19 @@ pub fn prepare(f: &CharPoly) -> Prepared {
                 .collect(),
         )
     });
-    let inv = closed_forms(&coeffs);
-    Prepared {
-        f: coeffs,
-        inv,
-        deg_f: f.degree(),
-    }
+    (coeffs, (j, shift))
+}
+
+/// Certified enclosures of the Bernstein coefficients on `[0, 1]` of the
+/// closed form `q` (not [`Quantity::Var`]) of `f`, times a positive
+/// constant: the closed form over the rescaled `f64` inputs of [`prepare`]
+/// (a positive multiple of `q`, the closed forms being homogeneous and
+/// isobaric), with the proven error bounds of [`BernsteinF64::enclosures`].
+/// The exact path isolates the roots of `sr0` from these without forming
+/// `sr0`; a coefficient whose sign they leave open sends it back to the
+/// exact polynomial.
+pub fn certified_bernstein(f: &CharPoly, q: Quantity) -> Vec<Interval> {
+    closed_form(&inputs(f).0, q).map_or_else(Vec::new, |p| p.enclosures())
 }
 
 #[cfg(test)]
@@ -167,6 +187,81 @@ mod tests {
             ZPoly::from_i64s(&[2, 1]).scaled_bernstein(),
             [2, 3].map(Int::from)
         );
+    }
+
+    /// `certified_bernstein` encloses the exact Bernstein coefficients of
+    /// `sr0` times `σ = 2^(12j − 6·shift)` (`sr0` is homogeneous of degree
+    /// 6 and isobaric of weight 12 in the `c_k`).
+    fn assert_encloses_sr0(f: &CharPoly) {
+        let enc = certified_bernstein(f, Quantity::Sr0);
+        let (_, (j, shift)) = inputs(f);
+        let sr0 = closed_form(&f.coeffs, Quantity::Sr0).expect("sr0");
+        let n = enc.len() - 1;
+        // sr0 in degree n on [0, 1], exactly.
+        let exact: Vec<Rat> = if sr0.is_zero() {
+            vec![Rat::zero(); n + 1]
+        } else {
+            let b = ccd_poly::Bernstein::from_power(&sr0, &Rat::zero(), &Rat::one());
+            let m = b.coeffs().len() - 1;
+            let elevated = ZPoly::new(
+                (0..=n)
+                    .map(|i| {
+                        (0..=m.min(i))
+                            .filter(|&k| i - k <= n - m)
+                            .fold(Int::zero(), |acc, k| {
+                                acc + &b.coeffs()[k]
+                                    * &ccd_poly::binomials(m)[k]
+                                    * &ccd_poly::binomials(n - m)[i - k]
+                            })
+                    })
+                    .collect(),
+            );
+            (0..=n)
+                .map(|i| {
+                    b.scale()
+                        * &Rat::new(
+                            elevated.coeffs().get(i).cloned().unwrap_or_else(Int::zero),
+                            ccd_poly::binomials(n)[i].clone(),
+                        )
+                        .expect("nonzero")
+                })
+                .collect()
+        };
+        for (iv, b) in enc.iter().zip(&exact) {
+            let b = b.mul_pow2(12 * j - 6 * shift);
+            let (lo, hi) = (Rat::from_f64_exact(iv.lo), Rat::from_f64_exact(iv.hi));
+            assert!(
+                lo.is_none_or(|lo| lo <= b) && hi.is_none_or(|hi| b <= hi),
+                "{iv:?} misses {}",
+                b.to_f64()
+            );
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// Random coefficients, and sr0 with cancellation: f with a double
+        /// root in λ on a random factor, so that sr0 is small or zero.
+        #[test]
+        fn certified_bernstein_encloses_the_exact_coefficients(
+            raw in proptest::collection::vec(proptest::collection::vec(-99i64..99, 1..6), 5),
+            root in proptest::collection::vec(-9i64..9, 1..3),
+            big in 0u32..200,
+        ) {
+            let scale = Int::from(3).pow(big);
+            let f = CharPoly { coeffs: std::array::from_fn(|k| ZPoly::new(raw[k].iter().map(|&c| &scale * &Int::from(c)).collect())) };
+            if f.coeffs.iter().all(ZPoly::is_zero) { return Ok(()); }
+            assert_encloses_sr0(&f);
+            // (λ − r(u))²·(λ² + raw0·λ + raw1): sr0 ≡ 0.
+            let r = ZPoly::from_i64s(&root);
+            let (p, q) = (ZPoly::new(raw[0].iter().map(|&c| Int::from(c)).collect()), ZPoly::new(raw[1].iter().map(|&c| Int::from(c)).collect()));
+            let sq = [ZPoly::one(), -&(&r * &ZPoly::from_i64s(&[2])), &r * &r];
+            let other = [ZPoly::one(), p, q];
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|d| {
+                (0..3).filter(|&a| d >= a && d - a < 3).fold(ZPoly::zero(), |acc, a| &acc + &(&sq[a] * &other[d - a]))
+            });
+            assert_encloses_sr0(&CharPoly { coeffs });
+        }
     }
 
     #[test]

@@ -47,7 +47,7 @@ pub(crate) struct FloatBernstein {
 impl FloatBernstein {
     /// From interval enclosures of the exact (scaled) coefficients: their
     /// midpoints and distances to the farther end.
-    fn from_intervals(iv: &[Interval]) -> FloatBernstein {
+    pub(crate) fn from_intervals(iv: &[Interval]) -> FloatBernstein {
         let coeffs: Vec<f64> = iv.iter().map(Interval::mid).collect();
         let errs = iv
             .iter()

@@ -13,12 +13,23 @@
 //! Every node first tries the `f64`-interval filter; a node with a
 //! coefficient whose sign the filter cannot prove is recomputed in exact
 //! integers, and stays exact while its signs need it.
+//!
+//! [`RootIter::filtered`] starts instead from enclosures of the Bernstein
+//! coefficients that the caller computed without forming the polynomial
+//! (the closed form of `sr0` in `f64` Bernstein arithmetic with a proven
+//! error bound): it never goes exact, and stops as undecided where the
+//! filter cannot sign a coefficient, so the caller can fall back to the
+//! exact polynomial.
 
 use crate::float_bernstein::FloatBernstein;
-use crate::root::{RealRoot, SignProbe};
-use ccd_arith::Rat;
+use crate::root::{RealRoot, SignModel, SignProbe};
+use ccd_arith::{Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
+
+/// Subdivision depth at which a filter-only isolation gives up: the
+/// filter cannot separate roots closer than this (or a multiple root).
+const FILTER_DEPTH: u32 = 64;
 
 enum Coeffs {
     Float(FloatBernstein),
@@ -28,11 +39,15 @@ enum Coeffs {
 struct Node {
     lo: Rat,
     hi: Rat,
+    depth: u32,
     coeffs: Coeffs,
 }
 
-enum Item {
-    Root(RealRoot),
+// A node holds its coefficient vectors behind pointers already; the stack
+// is short (one path of the subdivision tree), so its size does not matter.
+#[allow(clippy::large_enum_variant)]
+enum Item<M: SignModel + Clone> {
+    Root(RealRoot<M>),
     Node(Node),
 }
 
@@ -52,18 +67,19 @@ fn variations(signs: &[i32]) -> usize {
 }
 
 impl Node {
-    fn exact(p: &ZPoly, lo: Rat, hi: Rat) -> Node {
+    fn exact(p: &ZPoly, lo: Rat, hi: Rat, depth: u32) -> Node {
         let b = Bernstein::from_power(p, &lo, &hi);
         Node {
             lo,
             hi,
+            depth,
             coeffs: Coeffs::Exact(b),
         }
     }
 
     /// Prefers the float form of exact coefficients whenever the filter can
     /// sign every coefficient.
-    fn from_exact_bernstein(b: Bernstein) -> Node {
+    fn from_exact_bernstein(b: Bernstein, depth: u32) -> Node {
         let (lo, hi) = (b.lo().clone(), b.hi().clone());
         let f = FloatBernstein::from_exact(b.coeffs(), b.scale().signum());
         let coeffs = if f.signs().is_some() {
@@ -71,7 +87,12 @@ impl Node {
         } else {
             Coeffs::Exact(b)
         };
-        Node { lo, hi, coeffs }
+        Node {
+            lo,
+            hi,
+            depth,
+            coeffs,
+        }
     }
 
     fn signs(&self) -> Option<Vec<i32>> {
@@ -88,6 +109,7 @@ impl Node {
     /// split point when the coefficients prove it.
     fn split(self) -> (Node, Node, Option<i32>) {
         let mid = Rat::midpoint(&self.lo, &self.hi);
+        let depth = self.depth + 1;
         match self.coeffs {
             Coeffs::Float(f) => {
                 let (l, r) = f.split_half();
@@ -95,11 +117,13 @@ impl Node {
                 let left = Node {
                     lo: self.lo,
                     hi: mid.clone(),
+                    depth,
                     coeffs: Coeffs::Float(l),
                 };
                 let right = Node {
                     lo: mid,
                     hi: self.hi,
+                    depth,
                     coeffs: Coeffs::Float(r),
                 };
                 (left, right, s)
@@ -108,8 +132,8 @@ impl Node {
                 let (l, r) = b.split_half();
                 let s = l.sign_at_hi();
                 (
-                    Node::from_exact_bernstein(l),
-                    Node::from_exact_bernstein(r),
+                    Node::from_exact_bernstein(l, depth),
+                    Node::from_exact_bernstein(r, depth),
                     Some(s),
                 )
             }
@@ -124,17 +148,22 @@ impl Node {
     }
 }
 
-/// The real roots of a squarefree polynomial in a closed interval, isolated
-/// lazily in increasing order. Built by [`crate::isolate`].
-pub struct RootIter {
-    base: Arc<SignProbe>,
-    stack: Vec<Item>,
+/// The real roots of a squarefree function (an integer polynomial, or a
+/// [`SignModel`] of one) in a closed interval, isolated lazily in
+/// increasing order. Built by [`crate::isolate`] or [`RootIter::filtered`].
+pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
+    base: M,
+    stack: Vec<Item<M>>,
+    /// Filter-only mode ([`RootIter::filtered`]): never go exact.
+    filter_only: bool,
+    /// A filter-only isolation met a sign it could not prove.
+    undecided: bool,
 }
 
-impl RootIter {
+impl RootIter<Arc<SignProbe>> {
     /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
     pub(crate) fn new(base: Arc<SignProbe>, lo: &Rat, hi: &Rat) -> RootIter {
-        let poly = base.poly();
+        let poly = base.exact();
         let (first, last) = (poly.sign_at(lo), poly.sign_at(hi));
         let mut stack = Vec::new();
         if last == 0 {
@@ -149,31 +178,87 @@ impl RootIter {
             Some(f) => Node {
                 lo: lo.clone(),
                 hi: hi.clone(),
+                depth: 0,
                 coeffs: Coeffs::Float(f),
             },
-            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi)),
+            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi), 0),
         };
         stack.push(Item::Node(root));
         if first == 0 {
             stack.push(Item::Root(RealRoot::exact(base.clone(), lo.clone())));
         }
-        RootIter { base, stack }
+        RootIter {
+            base,
+            stack,
+            filter_only: false,
+            undecided: false,
+        }
     }
 }
 
-impl Iterator for RootIter {
-    type Item = RealRoot;
+impl<M: SignModel + Clone> RootIter<M> {
+    /// The roots in `[lo, hi]` of the squarefree function of `model`, from
+    /// `coeffs`: enclosures of its Bernstein coefficients over `[lo, hi]`
+    /// times one positive constant. Only the filter is used: where it
+    /// cannot prove a sign (a coefficient's enclosure holds 0, including a
+    /// root at `lo` or `hi`, a multiple root, or roots closer than
+    /// `2^(−64)` of the interval) the iteration ends early and
+    /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
+    pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
+        let f = FloatBernstein::from_intervals(coeffs);
+        let undecided = coeffs.len() < 2 || lo >= hi || f.signs().is_none();
+        let stack = if undecided {
+            vec![]
+        } else {
+            vec![Item::Node(Node {
+                lo: lo.clone(),
+                hi: hi.clone(),
+                depth: 0,
+                coeffs: Coeffs::Float(f),
+            })]
+        };
+        RootIter {
+            base: model,
+            stack,
+            filter_only: true,
+            undecided,
+        }
+    }
 
-    fn next(&mut self) -> Option<RealRoot> {
+    /// Whether a filter-only isolation stopped at a sign it could not
+    /// prove: the roots it yielded are proven, but there may be more.
+    pub fn undecided(&self) -> bool {
+        self.undecided
+    }
+
+    /// Ends a filter-only isolation as undecided.
+    fn give_up(&mut self) -> Option<RealRoot<M>> {
+        self.undecided = true;
+        self.stack.clear();
+        None
+    }
+}
+
+impl<M: SignModel + Clone> Iterator for RootIter<M> {
+    type Item = RealRoot<M>;
+
+    fn next(&mut self) -> Option<RealRoot<M>> {
         while let Some(item) = self.stack.pop() {
             let node = match item {
                 Item::Root(r) => return Some(r),
                 Item::Node(n) => n,
             };
             let Some(signs) = node.signs() else {
+                if self.filter_only {
+                    return self.give_up();
+                }
                 // The filter cannot sign a coefficient: redo this node exactly.
-                self.stack
-                    .push(Item::Node(Node::exact(self.base.poly(), node.lo, node.hi)));
+                self.stack.push(Item::Node(Node::exact(
+                    self.base.exact(),
+                    node.lo,
+                    node.hi,
+                    node.depth,
+                )));
                 continue;
             };
             let var = variations(&signs);
@@ -189,9 +274,12 @@ impl Iterator for RootIter {
                     first,
                 ));
             }
+            if self.filter_only && node.depth >= FILTER_DEPTH {
+                return self.give_up();
+            }
             let mid = Rat::midpoint(&node.lo, &node.hi);
             let (mut left, mut right, mid_sign) = node.split();
-            let mid_sign = mid_sign.unwrap_or_else(|| self.base.poly().sign_at(&mid));
+            let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
             if mid_sign == 0 {
                 right.set_endpoint_zero(false);
             }

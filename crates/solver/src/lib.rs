@@ -23,7 +23,7 @@ mod root;
 mod scaled;
 
 pub use isolate::RootIter;
-pub use root::{RealRoot, SignModel, SignProbe};
+pub use root::{ExactJet, RealRoot, SignModel, SignProbe};
 pub use scaled::ScaledPoly;
 
 use ccd_arith::Rat;

@@ -1,6 +1,7 @@
-//! [`RealRoot`]: a real algebraic number given by a squarefree integer
-//! polynomial and an isolating interval with exact rational ends; refinable
-//! to any width, and able to decide the exact sign of any polynomial at it.
+//! [`RealRoot`]: a real algebraic number given by a squarefree function
+//! (an integer polynomial, or any [`SignModel`] of one) and an isolating
+//! interval with exact rational ends; refinable to any width, and able to
+//! decide the exact sign of any polynomial at it.
 
 use crate::scaled::ScaledPoly;
 use ccd_arith::{Int, Interval, Rat};
@@ -36,30 +37,41 @@ impl SignProbe {
     pub(crate) fn shared(q: ZPoly) -> Arc<SignProbe> {
         Arc::new(SignProbe::of(q))
     }
+}
 
-    /// The polynomial.
-    pub(crate) fn poly(&self) -> &ZPoly {
-        &self.q
-    }
+/// Exact values of `σ·q` and `σ·q′` at a dyadic point `m`, as integers
+/// over powers of two: `σ·q(m) = value·2^(−value_exp)` and
+/// `σ·q′(m) = slope·2^(−slope_exp)` ([`SignModel::exact_jet_at`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExactJet {
+    /// `σ·q(m)·2^value_exp`.
+    pub value: Int,
+    /// `σ·q′(m)·2^slope_exp`.
+    pub slope: Int,
+    /// The power of two under `value`.
+    pub value_exp: i64,
+    /// The power of two under `slope`.
+    pub slope_exp: i64,
+}
 
-    /// `q(m)` and `q′(m)` on the `f64` view's scale, from the homogeneous
-    /// values `H = 2^(k·n)·q(m)`, `H′ = 2^(k·(n−1))·q′(m)` at `m = a/2^k`.
-    fn scaled_at_dyadic(&self, h: &Int, dh: &Int, k: i64) -> (Interval, Interval) {
-        let n = self.q.degree().unwrap_or(0) as i64;
-        let shift = self.sq.shift();
+impl ExactJet {
+    /// `(σ·q(m), σ·q′(m))` enclosed (one rounding each).
+    pub fn enclose(&self) -> (Interval, Interval) {
         (
-            Interval::from_int_scaled(h, shift + k * n),
-            Interval::from_int_scaled(dh, shift + k * (n - 1).max(0)),
+            Interval::from_int_scaled(&self.value, self.value_exp),
+            Interval::from_int_scaled(&self.slope, self.slope_exp),
         )
     }
 }
 
-/// A quantity `q(t)` as [`RealRoot::sign_with`] needs it near a root: for a
-/// constant `σ > 0` of the model's choosing, certified enclosures of `σ·q`
-/// and `σ·q″` over intervals, tight enclosures of `σ·q(m)` and `σ·q′(m)`
-/// at dyadic points (from exact values, one rounding each), the exact sign
-/// at a rational point, and `q` itself for deciding `q(α) = 0` (which may
-/// be formed only when first asked for).
+/// A quantity `q(t)` as [`RealRoot`] needs it, both as the function whose
+/// root it is (refinement) and as a quantity whose sign is asked for at a
+/// root ([`RealRoot::sign_with`]): for a constant `σ > 0` of the model's
+/// choosing, certified enclosures of `σ·q` and `σ·q″` over intervals,
+/// exact values of `σ·q(m)` and `σ·q′(m)` at dyadic points, `f64` guesses
+/// for Newton steps, the exact sign at a rational point, and `q` itself
+/// for deciding `q(α) = 0` (which may be formed only when first asked
+/// for).
 ///
 /// [`SignProbe`] is the model of an explicit polynomial; a caller that has
 /// `q` as a function of other polynomials (the closed forms of Section 4
@@ -70,12 +82,50 @@ pub trait SignModel {
     fn enclose(&self, x: Interval) -> Interval;
     /// `σ·q″(X)` enclosed.
     fn enclose_second(&self, x: Interval) -> Interval;
+    /// `σ·q(m)` and `σ·q′(m)` exactly, for a dyadic `m`.
+    fn exact_jet_at(&self, m: &Rat) -> ExactJet;
     /// `(σ·q(m), σ·q′(m))` enclosed, for a dyadic `m`.
-    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval);
+    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
+        self.exact_jet_at(m).enclose()
+    }
+    /// `(σ·q(x), σ·q′(x))` approximately (Newton guesses; no guarantee).
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64);
     /// The exact sign of `q(x)`.
     fn sign_at(&self, x: &Rat) -> i32;
+    /// `false` only if `q(x) ≠ 0` is certain from a cheap test (the
+    /// rational root theorem); `true` is always a safe answer.
+    fn admits_root_at(&self, _x: &Rat) -> bool {
+        true
+    }
     /// `q` exactly.
     fn exact(&self) -> &ZPoly;
+}
+
+impl<T: SignModel> SignModel for Arc<T> {
+    fn enclose(&self, x: Interval) -> Interval {
+        (**self).enclose(x)
+    }
+    fn enclose_second(&self, x: Interval) -> Interval {
+        (**self).enclose_second(x)
+    }
+    fn exact_jet_at(&self, m: &Rat) -> ExactJet {
+        (**self).exact_jet_at(m)
+    }
+    fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
+        (**self).value_and_slope_at(m)
+    }
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        (**self).approx_value_and_slope(x)
+    }
+    fn sign_at(&self, x: &Rat) -> i32 {
+        (**self).sign_at(x)
+    }
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        (**self).admits_root_at(x)
+    }
+    fn exact(&self) -> &ZPoly {
+        (**self).exact()
+    }
 }
 
 impl SignModel for SignProbe {
@@ -85,14 +135,28 @@ impl SignModel for SignProbe {
     fn enclose_second(&self, x: Interval) -> Interval {
         self.sq.enclose_derivative(2, x)
     }
+    /// `H = 2^(k·n)·q(m)` and `H′ = 2^(k·(n−1))·q′(m)` at `m = a/2^k` from
+    /// one homogeneous Horner pass, on the `f64` view's scale.
+    fn exact_jet_at(&self, m: &Rat) -> ExactJet {
+        let k = m.dyadic_exponent().expect("a dyadic point") as i64;
+        let (value, slope) = self.q.eval_homogeneous_with_derivative(m);
+        let n = self.q.degree().unwrap_or(0) as i64;
+        let shift = self.sq.shift();
+        ExactJet {
+            value,
+            slope,
+            value_exp: shift + k * n,
+            slope_exp: shift + k * (n - 1).max(0),
+        }
+    }
     /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
     /// from one Horner pass, then scaled like the `f64` view: by shifts at
     /// a dyadic `m` (the solver's case), by an enclosed division otherwise.
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
-        let (qm, dqm) = self.q.eval_homogeneous_with_derivative(m);
-        if let Some(k) = m.dyadic_exponent() {
-            return self.scaled_at_dyadic(&qm, &dqm, k as i64);
+        if m.dyadic_exponent().is_some() {
+            return self.exact_jet_at(m).enclose();
         }
+        let (qm, dqm) = self.q.eval_homogeneous_with_derivative(m);
         let n = self.q.degree().unwrap_or(0) as u32;
         let b = m.denom();
         let over = |h: &Int, e: u32| {
@@ -101,29 +165,46 @@ impl SignModel for SignProbe {
         };
         (over(&qm, n), over(&dqm, n.saturating_sub(1)))
     }
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        self.sq.value_and_slope(x)
+    }
     fn sign_at(&self, x: &Rat) -> i32 {
         self.q.sign_at(x)
+    }
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        self.q.admits_rational_root(x)
     }
     fn exact(&self) -> &ZPoly {
         &self.q
     }
 }
 
-/// A real root `α` of a squarefree `p ∈ ℤ[t]`: either known exactly
+/// What a float Newton jump achieved.
+enum Jump {
+    /// The enclosure at least halved (or the root turned out exact).
+    Progress,
+    /// No progress, with the enclosure still wide: Newton's guess was off.
+    Failed,
+    /// No progress because the enclosure is at the root's float resolution.
+    AtResolution,
+}
+
+/// A real root `α` of a squarefree `p` (the function of a [`SignModel`]
+/// `M`; by default an explicit polynomial in ℤ[t]): either known exactly
 /// (`lo = hi = α`, a rational root) or the only root of `p` in the open
 /// interval `(lo, hi)`, where `p(lo)` and `p(hi)` are nonzero with opposite
 /// signs.
 #[derive(Clone, Debug)]
-pub struct RealRoot {
-    base: Arc<SignProbe>,
+pub struct RealRoot<M: SignModel + Clone = Arc<SignProbe>> {
+    base: M,
     lo: Rat,
     hi: Rat,
     /// Sign of `p(lo)`; 0 when the root is exact.
     sign_lo: i32,
 }
 
-impl RealRoot {
-    pub(crate) fn exact(base: Arc<SignProbe>, at: Rat) -> RealRoot {
+impl<M: SignModel + Clone> RealRoot<M> {
+    pub(crate) fn exact(base: M, at: Rat) -> RealRoot<M> {
         RealRoot {
             base,
             lo: at.clone(),
@@ -132,7 +213,7 @@ impl RealRoot {
         }
     }
 
-    pub(crate) fn isolated(base: Arc<SignProbe>, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot {
+    pub(crate) fn isolated(base: M, lo: Rat, hi: Rat, sign_lo: i32) -> RealRoot<M> {
         debug_assert!(sign_lo != 0 && lo < hi);
         RealRoot {
             base,
@@ -150,9 +231,10 @@ impl RealRoot {
     pub fn hi(&self) -> &Rat {
         &self.hi
     }
-    /// The squarefree polynomial this is a root of.
+    /// The squarefree polynomial this is a root of (formed on first need
+    /// when the model defines it implicitly).
     pub fn poly(&self) -> &ZPoly {
-        &self.base.q
+        self.base.exact()
     }
     /// The rational value when the root is known exactly.
     pub fn exact_value(&self) -> Option<&Rat> {
@@ -165,10 +247,6 @@ impl RealRoot {
     /// The midpoint of the enclosure.
     pub fn midpoint(&self) -> Rat {
         Rat::midpoint(&self.lo, &self.hi)
-    }
-
-    fn scaled(&self) -> &ScaledPoly {
-        &self.base.sq
     }
 
     /// Moves one end to `x` (strictly inside) according to `s`, the exact
@@ -187,7 +265,7 @@ impl RealRoot {
 
     /// The sign of `p(x)` when the `f64` enclosure proves it.
     fn float_sign_of_p_at(&self, x: &Rat) -> Option<i32> {
-        self.scaled()
+        self.base
             .enclose(Interval::from_rat(x))
             .sign()
             .filter(|s| *s != 0)
@@ -197,9 +275,8 @@ impl RealRoot {
     /// exact evaluation otherwise.
     fn sign_of_p_at(&self, x: &Rat) -> i32 {
         self.float_sign_of_p_at(x)
-            .unwrap_or_else(|| self.base.q.sign_at(x))
+            .unwrap_or_else(|| self.base.sign_at(x))
     }
-
     /// Halves the enclosure (one sign evaluation).
     pub fn bisect(&mut self) {
         if self.sign_lo != 0 {
@@ -217,15 +294,14 @@ impl RealRoot {
     /// over `|p′(x)|`): closer cuts could not be signed in `f64`, and exact
     /// signs this close to the root are [`RealRoot::exact_newton_jump`]'s
     /// job, which needs two exact evaluations for any number of bits.
-    fn newton_jump(&mut self, target: &Rat) -> bool {
+    fn newton_jump(&mut self, target: &Rat) -> Jump {
         let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
-        let sp = self.scaled();
         let mut x = 0.5 * (lo_f + hi_f);
         let mut slope = 0.0;
         for _ in 0..12 {
-            let (v, d) = sp.value_and_slope(x);
+            let (v, d) = self.base.approx_value_and_slope(x);
             if d == 0.0 || !v.is_finite() || !d.is_finite() {
-                return false;
+                return Jump::Failed;
             }
             slope = d;
             let nx = (x - v / d).clamp(lo_f, hi_f);
@@ -234,7 +310,7 @@ impl RealRoot {
             }
             x = nx;
         }
-        let resolution = sp.enclose(Interval::point(x)).width() / slope.abs();
+        let resolution = self.base.enclose(Interval::point(x)).width() / slope.abs();
         let eps = (target.to_f64() * 0.25)
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
@@ -244,20 +320,31 @@ impl RealRoot {
             Rat::from_f64_exact(x + eps),
             Rat::from_f64_exact(x + 2.0 * eps),
         ) else {
-            return false;
+            return Jump::Failed;
         };
         // The shortest dyadics near x ∓ eps.
-        self.cut_both(
+        if self.cut_both(
             Rat::dyadic_in(&a0, &a1),
             Rat::dyadic_in(&b0, &b1),
-            RealRoot::float_sign_of_p_at,
-        )
+            RealRoot::<M>::float_sign_of_p_at,
+        ) {
+            Jump::Progress
+        } else if 8.0 * eps >= hi_f - lo_f {
+            Jump::AtResolution
+        } else {
+            Jump::Failed
+        }
     }
 
     /// Cuts at `a` and at `b` (each only if strictly inside and `sign`
     /// proves the sign of `p` there); whether that made the root exact or at
     /// least halved the enclosure.
-    fn cut_both(&mut self, a: Rat, b: Rat, sign: impl Fn(&RealRoot, &Rat) -> Option<i32>) -> bool {
+    fn cut_both(
+        &mut self,
+        a: Rat,
+        b: Rat,
+        sign: impl Fn(&RealRoot<M>, &Rat) -> Option<i32>,
+    ) -> bool {
         let old = self.width();
         for x in [a, b] {
             if x > self.lo && x < self.hi {
@@ -271,38 +358,35 @@ impl RealRoot {
 
     /// One exact Newton step, for when `f64` cannot resolve the root any
     /// further: from a short dyadic `m = a/2^j` in the middle half of the
-    /// enclosure `I`, `x = m − p(m)/p′(m) = (a·P′ − P)/(2^j·P′)` with the
-    /// exact homogeneous values `P = 2^(jn)·p(m)`, `P′ = 2^(j(n−1))·p′(m)`,
-    /// rounded down to `X/2^k` with `2^(−k)` about `max(w², target/4)` for
-    /// the current width `w` (Newton's error is quadratic in `m`'s; one
-    /// integer division, no gcd). The enclosure is then cut at
-    /// `(X − 1)/2^k` and `(X + 2)/2^k`; `false` if the width did not halve.
+    /// enclosure `I`, `x = m − p(m)/p′(m)` from the model's exact values
+    /// `σ·p(m) = V·2^(−v)`, `σ·p′(m) = S·2^(−s)` ([`ExactJet`]), rounded
+    /// down to `X/2^k` with `2^(−k)` about `max(w², target/4)` for the
+    /// current width `w` (Newton's error is quadratic in `m`'s; one integer
+    /// division, no gcd). The enclosure is then cut at `(X − 1)/2^k` and
+    /// `(X + 2)/2^k`; `false` if the width did not halve.
     ///
     /// The sign of `p` at a cut `x` comes from the same two exact values:
     /// `p(x) = p(m) + p′(m)·D + p″(ξ)·D²/2` with `D = x − m` and `ξ ∈ I`
     /// (Taylor with Lagrange remainder). The linear part is one exact
-    /// integer, `2^(jn+e)·(p(m) + p′(m)·D) = P·2^e + P′·d·2^j` for
-    /// `D = d/2^e`, and only the remainder is enclosed in `f64` (`p″` over
-    /// `I`, times `D²`); where that does not decide, `p(x)` is evaluated
-    /// exactly.
+    /// integer over a power of two, `V·2^(T−v) + S·d·2^(T−s−e)` for
+    /// `D = d/2^e` and `T = max(v, s + e)`, and only the remainder is
+    /// enclosed in `f64` (`p″` over `I`, times `D²`); where that does not
+    /// decide, `p(x)` is evaluated exactly.
     fn exact_newton_jump(&mut self, target: &Rat) -> bool {
         let w = self.width();
         let quarter = &w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
-        let j = m.dyadic_exponent().expect("dyadic_in is dyadic");
-        let base = self.base.clone();
-        let (pm, dpm) = base.q.eval_homogeneous_with_derivative(&m);
-        if dpm.is_zero() {
+        let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
+        let jet = self.base.exact_jet_at(&m);
+        if jet.slope.is_zero() {
             return false;
         }
-        let shift = base.sq.shift();
-        let n = base.q.degree().unwrap_or(0) as i64;
-        let second = base.sq.enclose_derivative(2, self.enclosure());
+        let second = self.base.enclose_second(self.enclosure());
         // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
         // cut δ from the root has a linear part near |p′|·δ: cuts closer
         // than `reach` would need exact evaluations, so when the model
         // reaches well inside the enclosure the cuts go no closer.
-        let (_, slope) = base.scaled_at_dyadic(&pm, &dpm, j as i64);
+        let (_, slope) = jet.enclose();
         let w_f = w.to_f64();
         let reach =
             second.lo.abs().max(second.hi.abs()) * w_f * w_f / slope.lo.abs().min(slope.hi.abs());
@@ -316,27 +400,33 @@ impl RealRoot {
         let k = neg_log2(&(&w * &w))
             .min(neg_log2(target) + 2)
             .min(model_k)
-            .max(neg_log2(&w) + 2) as u64;
-        let x_scaled = (m.numer() * &dpm - &pm)
-            .shl(k)
-            .div_floor(&(m.denom() * &dpm));
-        let taylor_sign = |root: &RealRoot, x: &Rat| {
+            .max(neg_log2(&w) + 2);
+        // 2^k·x = (a·S·2^(k−j) − V·2^(k+s−v))/S, over a common power of two
+        // that keeps every exponent nonnegative.
+        let (v, s) = (jet.value_exp, jet.slope_exp);
+        let lift = 0.max(j - k).max(v - s - k);
+        let shl = |x: &Int, e: i64| x.shl(e as u64);
+        let x_scaled = (shl(&(m.numer() * &jet.slope), k - j + lift)
+            - shl(&jet.value, k + s - v + lift))
+        .div_floor(&shl(&jet.slope, lift));
+        let taylor_sign = |root: &RealRoot<M>, x: &Rat| {
             let d = x - &m;
-            let e = d.dyadic_exponent().expect("dyadics differ by a dyadic");
-            let linear = pm.shl(e) + (&dpm * d.numer()).shl(j);
+            let e = d.dyadic_exponent().expect("dyadics differ by a dyadic") as i64;
+            let t = v.max(s + e);
+            let linear = shl(&jet.value, t - v) + shl(&(&jet.slope * d.numer()), t - s - e);
             let dd = Interval::from_rat(&d);
-            let value = Interval::from_int_scaled(&linear, j as i64 * n + e as i64 + shift)
-                + second * dd.square() * Interval::point(0.5);
+            let value =
+                Interval::from_int_scaled(&linear, t) + second * dd.square() * Interval::point(0.5);
             Some(
                 value
                     .sign()
                     .filter(|s| *s != 0)
-                    .unwrap_or_else(|| root.base.q.sign_at(x)),
+                    .unwrap_or_else(|| root.base.sign_at(x)),
             )
         };
         self.cut_both(
-            Rat::dyadic(&x_scaled - &Int::one(), k),
-            Rat::dyadic(&x_scaled + &Int::from(2), k),
+            Rat::dyadic(&x_scaled - &Int::one(), k as u64),
+            Rat::dyadic(&x_scaled + &Int::from(2), k as u64),
             taylor_sign,
         )
     }
@@ -348,16 +438,21 @@ impl RealRoot {
     /// `a/b` with `b² < 1/(hi − lo)` is that rational, and is then reported
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
-        let mut newton_ok = true;
+        // Float Newton until it reaches the root's float resolution; after
+        // a failure farther out (outside its basin), a few bisections first.
+        let mut float_newton = true;
+        let mut float_wait = 0u32;
         // Bisections left before the next exact Newton attempt.
         let mut wait = 0u32;
         while self.sign_lo != 0 && self.width() > *max_width {
-            if newton_ok {
-                newton_ok = self.newton_jump(max_width);
-                if newton_ok {
-                    continue;
+            if float_newton && float_wait == 0 {
+                match self.newton_jump(max_width) {
+                    Jump::Progress => continue,
+                    Jump::Failed => float_wait = 2,
+                    Jump::AtResolution => float_newton = false,
                 }
             }
+            float_wait = float_wait.saturating_sub(1);
             // Exact Newton once the enclosure is narrow enough for its
             // quadratic regime to be likely (`2^(−10)` of the span).
             if wait == 0 && self.width() <= Rat::dyadic(Int::one(), 10) {
@@ -373,8 +468,8 @@ impl RealRoot {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
                 && s != self.hi
-                && self.base.q.admits_rational_root(&s)
-                && self.base.q.sign_at(&s) == 0
+                && self.base.admits_root_at(&s)
+                && self.base.sign_at(&s) == 0
             {
                 self.lo = s.clone();
                 self.hi = s;
@@ -436,7 +531,7 @@ impl RealRoot {
             }
             if !zero_checked && (round >= 1 || qm.contains_zero()) {
                 zero_checked = true;
-                let g = self.base.q.gcd(model.exact());
+                let g = self.base.exact().gcd(model.exact());
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
                     return 0;
                 }

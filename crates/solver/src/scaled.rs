@@ -68,7 +68,7 @@ impl ScaledPoly {
     }
 
     /// `(p(x), p'(x))` approximately, scaled.
-    pub(crate) fn value_and_slope(&self, x: f64) -> (f64, f64) {
+    pub fn value_and_slope(&self, x: f64) -> (f64, f64) {
         let mut v = 0.0;
         let mut d = 0.0;
         for &c in self.approx.iter().rev() {

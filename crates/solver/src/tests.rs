@@ -2,7 +2,7 @@
 //! construction.
 
 use crate::{has_root_in, isolate, SolverError};
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::ZPoly;
 use proptest::prelude::*;
 
@@ -120,6 +120,52 @@ proptest! {
             let expected = (r - &c).signum();
             prop_assert_eq!(f.sign_of(&linear(&c)), expected);
         }
+    }
+
+    /// Filter-only isolation from enclosures of the Bernstein coefficients
+    /// finds the same roots as exact isolation when the roots are simple,
+    /// refines them through the model, and reports a multiple root (or a
+    /// coefficient enclosure holding 0) as undecided instead of guessing.
+    #[test]
+    fn filtered_isolation_matches_exact(raw in proptest::collection::vec((1i64..=60, 2i64..=61), 1..6), shift in 1i64..5, double in proptest::bool::ANY) {
+        let mut roots: Vec<Rat> = Vec::new();
+        for (p, q) in raw {
+            let r = Rat::from_frac(p.min(q - 1), q);
+            if !roots.contains(&r) {
+                roots.push(r);
+            }
+        }
+        let mult = if double { 2 } else { 1 };
+        let factors: Vec<(Rat, u32)> = roots.iter().enumerate().map(|(i, r)| (r.clone(), if i == 0 { mult } else { 1 })).collect();
+        let poly = &product(&factors) * &ZPoly::from_i64s(&[shift, 0, 1]);
+        let b = ccd_poly::Bernstein::from_power(&poly, &Rat::zero(), &Rat::one());
+        let sign = b.scale().signum();
+        let coeffs: Vec<Interval> = b.coeffs().iter().map(|c| {
+            let iv = Interval::from_int_scaled(c, 0);
+            if sign < 0 { -iv } else { iv }
+        }).collect();
+        let model = std::sync::Arc::new(crate::SignProbe::new(&poly));
+        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
+        let found: Vec<_> = iter.by_ref().collect();
+        roots.sort();
+        if double {
+            prop_assert!(iter.undecided());
+        } else {
+            prop_assert!(!iter.undecided());
+            prop_assert_eq!(found.len(), roots.len());
+            for (mut f, r) in found.into_iter().zip(&roots) {
+                prop_assert!(f.lo() <= r && r <= f.hi());
+                f.refine_to(&Rat::from_frac(1, 1 << 40));
+                prop_assert!(f.lo() <= r && r <= f.hi());
+            }
+        }
+        // A coefficient that cannot be signed stops the isolation.
+        let mut blurred = coeffs.clone();
+        blurred[coeffs.len() / 2] = blurred[coeffs.len() / 2].hull(&Interval::point(0.0));
+        let model = std::sync::Arc::new(crate::SignProbe::new(&poly));
+        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &blurred);
+        let _ = iter.by_ref().count();
+        prop_assert!(iter.undecided() || blurred[coeffs.len() / 2].lo == 0.0 && blurred[coeffs.len() / 2].hi == 0.0);
     }
 
     /// First-root-only isolation returns the smallest root.
