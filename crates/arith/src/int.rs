@@ -156,6 +156,20 @@ impl Int {
     pub fn pow(&self, e: u32) -> Int {
         Int(k::pow(&self.0, e))
     }
+    /// The value as an `i128`, if it fits.
+    pub fn to_i128(&self) -> Option<i128> {
+        if self.bits() > 127 {
+            return None;
+        }
+        let digit = |i| k::u64_digit_of_abs(&self.0, i) as u128;
+        let m = (digit(1) << 64 | digit(0)) as i128;
+        Some(if self.is_negative() { -m } else { m })
+    }
+    /// The image of an `i128`.
+    pub fn from_i128(v: i128) -> Int {
+        let m = v.unsigned_abs();
+        Int(k::from_u64_limbs(v < 0, &[m as u64, (m >> 64) as u64]))
+    }
     /// The value as an `i64`, if it fits.
     #[inline]
     pub fn to_i64(&self) -> Option<i64> {

@@ -54,7 +54,6 @@
 
 use crate::approx::Approx;
 use ccd_arith::{Interval, RingOps};
-use ccd_poly::binomials;
 
 /// An `f64` polynomial on `[0, 1]` in scaled Bernstein form, with
 /// magnitudes (module docs).
@@ -199,7 +198,7 @@ impl BernsteinF64 {
     /// Certified enclosures of the ordinary Bernstein coefficients
     /// `b_i = p̃_i / C(n, i)` of the exact polynomial this one approximates
     /// (module docs): `p̃_i ± (γ_N·mag_i·(1 + 2^(−40)) + 3A)`, rounded
-    /// outward, over the exact binomial. Unbounded if the error analysis
+    /// outward, over an enclosure of the binomial. Unbounded if the error analysis
     /// does not apply (`γ_N > 1/2`, or a value that is not finite).
     pub fn enclosures(&self) -> Vec<Interval> {
         let u = f64::EPSILON / 2.0;
@@ -212,10 +211,19 @@ impl BernsteinF64 {
             return vec![whole; self.val.len()];
         }
         let gamma = nu / (1.0 - nu) * (1.0 + 2f64.powi(-40));
+        // C(n, i) enclosed: C(n, i + 1) = C(n, i)·(n − i)/(i + 1), rounded
+        // outward.
+        let n = self.degree();
+        let binomials = (0..=n).scan(Interval::point(1.0), |c, i| {
+            let here = *c;
+            *c = (*c * Interval::point((n - i) as f64))
+                .div_positive(Interval::point((i + 1) as f64));
+            Some(here)
+        });
         self.val
             .iter()
             .zip(&self.mag)
-            .zip(binomials(self.degree()))
+            .zip(binomials)
             .map(|((&v, &m), c)| {
                 let e = (gamma * m + 3.0 * self.tiny).next_up();
                 let iv = Interval {
@@ -223,7 +231,7 @@ impl BernsteinF64 {
                     hi: (v + e).next_up(),
                 };
                 if iv.lo.is_finite() && iv.hi.is_finite() {
-                    iv.div_positive(Interval::from_int(&c))
+                    iv.div_positive(c)
                 } else {
                     whole
                 }

@@ -26,7 +26,7 @@ use crate::error::MotionError;
 use crate::kinds::Body;
 use crate::matrices::{placed_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat};
-use ccd_poly::ZPoly;
+use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in ℤ[u],
@@ -67,10 +67,21 @@ impl CharPoly {
         // tie (rigid motions, whose inverse is a transpose) the quadrics,
         // whose five determinants take fewer products than 70 coordinates.
         let ((ma, na), (mb, nb)) = (a.degree_bounds(), b.degree_bounds());
+        // Both routes first in i128 (short decimal inputs fit), exactly
+        // in ZPoly if a number does not.
         let f = if na.max(nb) <= ma.max(mb) {
-            characteristic(&a.quadric(), &b.quadric())
+            let (qa, qb) = (a.quadric(), b.quadric());
+            small(&qa)
+                .zip(small(&qb))
+                .and_then(|(x, y)| lift(characteristic(&x, &y)))
+                .unwrap_or_else(|| characteristic(&qa, &qb))
         } else {
-            placed_characteristic(a.placement(), &a.diagonal, b.placement(), &b.diagonal)
+            let (pa, pb) = (a.placement(), b.placement());
+            small(pa)
+                .zip(small(pb))
+                .zip(small(&a.diagonal).zip(small(&b.diagonal)))
+                .and_then(|((x, y), (dx, dy))| lift(placed_characteristic(&x, &dx, &y, &dy)))
+                .unwrap_or_else(|| placed_characteristic(pa, &a.diagonal, pb, &b.diagonal))
         };
         CharPoly {
             coeffs: normalise_with(f, candidates),
@@ -102,6 +113,39 @@ impl CharPoly {
             c.eval_homogeneous(u) * u.denom().pow((d - top) as u32)
         })
     }
+}
+
+/// The entries in [`SmallPoly`], if they fit (arrays of any shape: rows
+/// of a matrix, or a diagonal).
+fn small<T: SmallEntries>(m: &T) -> Option<T::Small> {
+    m.to_small()
+}
+
+/// Arrays of [`ZPoly`] that have a [`SmallPoly`] image.
+trait SmallEntries {
+    type Small;
+    fn to_small(&self) -> Option<Self::Small>;
+}
+
+impl SmallEntries for ZPoly {
+    type Small = SmallPoly;
+    fn to_small(&self) -> Option<SmallPoly> {
+        SmallPoly::from_zpoly(self)
+    }
+}
+
+impl<T: SmallEntries, const N: usize> SmallEntries for [T; N] {
+    type Small = [T::Small; N];
+    fn to_small(&self) -> Option<[T::Small; N]> {
+        let v: Option<Vec<T::Small>> = self.iter().map(T::to_small).collect();
+        v?.try_into().ok()
+    }
+}
+
+/// The exact coefficients, unless a [`SmallPoly`] step overflowed.
+fn lift(f: [SmallPoly; 5]) -> Option<[ZPoly; 5]> {
+    let v: Option<Vec<ZPoly>> = f.iter().map(SmallPoly::to_zpoly).collect();
+    v?.try_into().ok()
 }
 
 /// `f(λ; u)` of two moving bodies, normalised (module docs) with the
@@ -241,6 +285,9 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
         for k in 0..5 {
             if let Some(vk) = v[k] {
                 let total = vk as i64 + e[k];
+                if total == vk as i64 {
+                    continue; // c_k unchanged (the cofactor times π^v_k)
+                }
                 c[k] = &cof[k] * &pi.pow(total as u32);
             }
         }

@@ -2,7 +2,7 @@
 //! `A(u) ∝ N(u)ᵀ·D·N(u)` (`N ∝ M⁻¹`) with integer polynomial entries in
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
-use crate::curve::{bernstein_to_power, to_poly_curve};
+use crate::curve::{to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat, RingOps};
@@ -165,22 +165,22 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
             Ok((rigid(&q, c.numerators, c.denominator), factors))
         }
         Motion::Affine { matrix } => {
-            let entry = |r: usize, k: usize| -> Bezier<[Rat; 1]> {
-                Bezier {
-                    points: matrix.points.iter().map(|m| [m[r][k].clone()]).collect(),
-                    weights: matrix.weights.clone(),
-                }
+            // The twelve entries as one curve: one weight polynomial.
+            let curve: Bezier<[Rat; 12]> = Bezier {
+                points: matrix
+                    .points
+                    .iter()
+                    .map(|m| std::array::from_fn(|i| m[i / 4][i % 4].clone()))
+                    .collect(),
+                weights: matrix.weights.clone(),
             };
-            let poly = |r: usize, k: usize| -> QPoly {
-                let [p] = to_poly_curve(&entry(r, k)).numerators;
-                p
-            };
+            let PolyCurve {
+                numerators: entries,
+                denominator: w,
+            } = to_poly_curve(&curve);
+            let poly = |r: usize, k: usize| entries[4 * r + k].clone();
             let l: Mat3<QPoly> = std::array::from_fn(|r| std::array::from_fn(|k| poly(r, k)));
             let d: [QPoly; 3] = std::array::from_fn(|r| poly(r, 3));
-            let w = match &matrix.weights {
-                Some(ws) => bernstein_to_power(ws),
-                None => QPoly::one(),
-            };
             check_weight(&w)?;
             let det_l = det3(&l);
             if let Some(at) = first_root_in_span(det_l.prim(), span) {

@@ -6,6 +6,8 @@
 //!   modular gcd ([`modular`]);
 //! * [`QPoly`]: polynomials over `Q` as `rational · primitive integer
 //!   polynomial`;
+//! * [`SmallPoly`]: `i128` coefficients with overflow detection, for
+//!   products whose numbers are usually small;
 //! * [`Bernstein`]: the Bernstein form on a rational interval, converted and
 //!   subdivided with integer arithmetic only.
 //!
@@ -21,10 +23,12 @@ pub mod mul;
 mod ntt;
 mod prime;
 mod qpoly;
+mod small;
 mod zpoly;
 
 pub use bernstein::{binomials, Bernstein};
 pub use qpoly::QPoly;
+pub use small::SmallPoly;
 pub use zpoly::ZPoly;
 
 #[cfg(test)]

@@ -102,9 +102,44 @@ pub(crate) fn taylor_shift_in_place(c: &mut [Int], s: &Int) {
     }
 }
 
+/// Binary gcd (`gcd(0, 0) = 0`).
+fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
 /// `gcd` of the entries, `≥ 0` (`0` when all vanish), stopping as soon as
 /// the running gcd is `1`.
 pub(crate) fn content_of(c: &[Int]) -> Int {
+    // Machine integers when every entry fits (the usual case for the
+    // characteristic polynomial of decimal scenes).
+    if let Some(small) = c.iter().map(|x| x.to_i128()).collect::<Option<Vec<i128>>>() {
+        let g = small
+            .iter()
+            .try_fold(0u128, |g, &x| {
+                let g = gcd_u128(g, x.unsigned_abs());
+                if g == 1 {
+                    Err(1)
+                } else {
+                    Ok(g)
+                }
+            })
+            .unwrap_or_else(|one| one);
+        return Int::from_i128(g as i128);
+    }
     // Start from the smallest coefficient (the gcd divides it), and reduce
     // each larger coefficient modulo the running gcd before the gcd itself:
     // one division instead of a binary gcd on full-size numbers.
@@ -374,6 +409,18 @@ impl ZPoly {
     pub fn scaled_bernstein(&self) -> Vec<Int> {
         if self.c.is_empty() {
             return vec![Int::zero()];
+        }
+        // The shift adds at most n bits (the entries are sums of at most
+        // 2^n coefficients): machine integers when that fits in i128.
+        if self.max_bits() as usize + self.c.len() < 126 {
+            let mut v: Vec<i128> = self.c.iter().rev().filter_map(Int::to_i128).collect();
+            let n = v.len();
+            for i in 0..n {
+                for j in (i..n - 1).rev() {
+                    v[j] += v[j + 1];
+                }
+            }
+            return v.into_iter().rev().map(Int::from_i128).collect();
         }
         crate::bernstein::reverse_shift_reverse(self.c.clone(), 1)
     }
@@ -752,6 +799,23 @@ mod tests {
             prop_assert_eq!(scaled.content(), &p.content() * &c.abs());
             prop_assert_eq!(scaled.primitive_part(), pp.clone());
             prop_assert_eq!(pp.mul_int(&p.content()), if p.leading().is_some_and(|l| l.is_negative()) { -p.clone() } else { p.clone() });
+        }
+
+        /// The machine-integer Bernstein conversion agrees with the
+        /// big-integer one, on both sides of the `i128` limit.
+        #[test]
+        fn scaled_bernstein_matches_the_exact_shift(p in zpoly_deg(0, 20, 120)) {
+            let want = if p.is_zero() { vec![Int::zero()] } else { crate::bernstein::reverse_shift_reverse(p.coeffs().to_vec(), 1) };
+            prop_assert_eq!(p.scaled_bernstein(), want);
+        }
+
+        /// The machine-integer content agrees with big-integer gcds, on
+        /// both sides of the `i128` limit.
+        #[test]
+        fn content_matches_pairwise_gcds(p in zpoly_deg(0, 10, 140), c in 1i64..1_000_000) {
+            let scaled = p.mul_int(&Int::from(c));
+            let want = scaled.coeffs().iter().fold(Int::zero(), |g, x| g.gcd(x));
+            prop_assert_eq!(scaled.content(), want);
         }
 
         #[test]

@@ -227,38 +227,51 @@ pub fn placed_characteristic<R: RingOps>(
             bottom[i][j] = minor(2);
         }
     }
-    // D_A(A∖T)·D_B(B∖T) as a product over the columns not in T.
-    let diagonal = |c: usize| if c < 4 { &da[c] } else { &db[c - 4] };
+    // D_A(A∖T)·D_B(B∖T) from the products of the diagonal entries over each
+    // subset of one body's four columns (bit c of the mask: column c).
+    let subset_products = |d: &[R; 4]| -> Vec<R> {
+        let mut p = vec![R::one()];
+        for (c, dc) in d.iter().enumerate() {
+            let more: Vec<R> = p[..1 << c].iter().map(|x| x.times(dc)).collect();
+            p.extend(more);
+        }
+        p
+    };
+    let (pa, pb) = (subset_products(da), subset_products(db));
     let mut coeffs: [R; 5] = std::array::from_fn(|_| R::zero());
     for t in (0u32..256).filter(|t| t.count_ones() == 4) {
-        let cols: Vec<usize> = (0..8).filter(|c| t >> c & 1 == 1).collect();
+        let mut cols = [0usize; 4];
+        for (slot, c) in cols.iter_mut().zip((0..8).filter(|c| t >> c & 1 == 1)) {
+            *slot = c;
+        }
         // Laplace along rows (0, 1): positions (p, q) of the top minor in T,
-        // sign (−1)^(p + q + 1).
+        // the complementary positions for the bottom one, sign
+        // (−1)^(p + q + 1).
         let mut plucker = R::zero();
-        for p in 0..4 {
-            for q in p + 1..4 {
-                let rest: Vec<usize> = (0..4).filter(|&x| x != p && x != q).collect();
-                let (upper, lower) = (
-                    &top[cols[p]][cols[q]],
-                    &bottom[cols[rest[0]]][cols[rest[1]]],
-                );
-                if upper.is_zero() || lower.is_zero() {
-                    continue;
-                }
-                let term = upper.times(lower);
-                plucker = if (p + q) % 2 == 1 {
-                    plucker.plus(&term)
-                } else {
-                    plucker.minus(&term)
-                };
+        for (p, q, r, s) in [
+            (0, 1, 2, 3),
+            (0, 2, 1, 3),
+            (0, 3, 1, 2),
+            (1, 2, 0, 3),
+            (1, 3, 0, 2),
+            (2, 3, 0, 1),
+        ] {
+            let (upper, lower) = (&top[cols[p]][cols[q]], &bottom[cols[r]][cols[s]]);
+            if upper.is_zero() || lower.is_zero() {
+                continue;
             }
+            let term = upper.times(lower);
+            plucker = if (p + q) % 2 == 1 {
+                plucker.plus(&term)
+            } else {
+                plucker.minus(&term)
+            };
         }
         if plucker.is_zero() {
             continue;
         }
-        let weight = (0..8)
-            .filter(|c| t >> c & 1 == 0)
-            .fold(R::one(), |w, c| w.times(diagonal(c)));
+        let rest = !t & 0xff;
+        let weight = pa[(rest & 0xf) as usize].times(&pb[(rest >> 4) as usize]);
         let from_a = (t & 0xf).count_ones() as usize;
         // λ^(4 − |T∩A|) is coefficient index |T∩A| (high → low).
         coeffs[from_a] = coeffs[from_a].plus(&weight.times(&plucker.times(&plucker)));

@@ -1,0 +1,227 @@
+//! [`SmallPoly`]: polynomials with `i128` coefficients that detect
+//! overflow, for exact computations whose numbers are usually small.
+//!
+//! Every [`RingOps`] operation is exact or marks the result as overflowed
+//! (a coefficient leaving `i128`, or a degree above [`SmallPoly::MAX_DEGREE`]);
+//! an overflowed value stays overflowed through every later operation, so a
+//! caller runs a generic routine over `SmallPoly` and converts back with
+//! [`SmallPoly::to_zpoly`], falling back to [`ZPoly`] on `None`. The
+//! characteristic polynomial of two placed bodies (Plücker coordinates of
+//! degree-2 placements with short decimal entries) is such a computation:
+//! a product costs a few machine multiplications per term instead of
+//! big-integer allocations.
+
+use crate::ZPoly;
+use ccd_arith::{Int, RingOps};
+
+/// Coefficient slots: degrees up to [`SmallPoly::MAX_DEGREE`].
+const CAP: usize = 17;
+
+/// A polynomial in `ℤ[t]` with `i128` coefficients (low → high), or the
+/// marker that an exact value did not fit (module docs).
+///
+/// ```
+/// use ccd_arith::RingOps;
+/// use ccd_poly::{SmallPoly, ZPoly};
+/// let p = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[1, 2])).unwrap();
+/// assert_eq!(p.times(&p).to_zpoly(), Some(ZPoly::from_i64s(&[1, 4, 4])));
+/// let big = SmallPoly::from_i64(i64::MAX);
+/// let huge = big.times(&big).times(&big); // about 2^189
+/// assert_eq!(huge.to_zpoly(), None);
+/// ```
+#[derive(Clone, Debug)]
+pub struct SmallPoly {
+    c: [i128; CAP],
+    /// Number of coefficients in use (no trailing zero); 0 for zero.
+    len: usize,
+    overflow: bool,
+}
+
+impl SmallPoly {
+    /// Largest degree held.
+    pub const MAX_DEGREE: usize = CAP - 1;
+
+    fn overflowed() -> SmallPoly {
+        SmallPoly {
+            c: [0; CAP],
+            len: 0,
+            overflow: true,
+        }
+    }
+
+    /// From coefficients (low → high); `None` marks an overflow.
+    fn build(coeffs: impl Iterator<Item = Option<i128>>, len: usize) -> SmallPoly {
+        if len > CAP {
+            return SmallPoly::overflowed();
+        }
+        let mut c = [0; CAP];
+        for (slot, v) in c.iter_mut().zip(coeffs) {
+            match v {
+                Some(v) => *slot = v,
+                None => return SmallPoly::overflowed(),
+            }
+        }
+        let len = c[..len].iter().rposition(|&v| v != 0).map_or(0, |i| i + 1);
+        SmallPoly {
+            c,
+            len,
+            overflow: false,
+        }
+    }
+
+    /// `p` if its degree and coefficients fit.
+    pub fn from_zpoly(p: &ZPoly) -> Option<SmallPoly> {
+        let q = SmallPoly::build(p.coeffs().iter().map(Int::to_i128), p.coeffs().len());
+        (!q.overflow).then_some(q)
+    }
+
+    /// The exact polynomial, `None` if an operation overflowed.
+    pub fn to_zpoly(&self) -> Option<ZPoly> {
+        (!self.overflow).then(|| {
+            ZPoly::new(
+                self.c[..self.len]
+                    .iter()
+                    .map(|&v| Int::from_i128(v))
+                    .collect(),
+            )
+        })
+    }
+
+    fn coeff(&self, i: usize) -> i128 {
+        if i < self.len {
+            self.c[i]
+        } else {
+            0
+        }
+    }
+
+    /// Coefficientwise `op`, overflow propagated.
+    fn zip(&self, o: &SmallPoly, op: impl Fn(i128, i128) -> Option<i128>) -> SmallPoly {
+        if self.overflow || o.overflow {
+            return SmallPoly::overflowed();
+        }
+        let len = self.len.max(o.len);
+        SmallPoly::build((0..len).map(|i| op(self.coeff(i), o.coeff(i))), len)
+    }
+}
+
+impl RingOps for SmallPoly {
+    fn zero() -> Self {
+        SmallPoly::build(std::iter::empty(), 0)
+    }
+    fn one() -> Self {
+        SmallPoly::from_i64(1)
+    }
+    fn from_i64(v: i64) -> Self {
+        SmallPoly::build(std::iter::once(Some(v as i128)), 1)
+    }
+    fn is_zero(&self) -> bool {
+        !self.overflow && self.len == 0
+    }
+    fn plus(&self, o: &Self) -> Self {
+        self.zip(o, i128::checked_add)
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.zip(o, i128::checked_sub)
+    }
+    fn times(&self, o: &Self) -> Self {
+        if self.overflow || o.overflow {
+            return SmallPoly::overflowed();
+        }
+        if self.len == 0 || o.len == 0 {
+            return SmallPoly::zero();
+        }
+        let len = self.len + o.len - 1;
+        if len > CAP {
+            return SmallPoly::overflowed();
+        }
+        let mut c = [0i128; CAP];
+        // No term and no running sum can leave i128 when the sizes say so:
+        // then plain products, else checked ones.
+        let bits = |p: &SmallPoly| {
+            let m = p.c[..p.len]
+                .iter()
+                .map(|v| v.unsigned_abs())
+                .max()
+                .unwrap_or(0);
+            128 - m.leading_zeros()
+        };
+        let terms = self.len.min(o.len) as u32;
+        let safe = bits(self) + bits(o) + (32 - terms.leading_zeros()) <= 126;
+        for (i, &x) in self.c[..self.len].iter().enumerate() {
+            if x == 0 {
+                continue;
+            }
+            if safe {
+                for (slot, &y) in c[i..].iter_mut().zip(&o.c[..o.len]) {
+                    *slot += x * y;
+                }
+                continue;
+            }
+            for (slot, &y) in c[i..].iter_mut().zip(&o.c[..o.len]) {
+                match x.checked_mul(y).and_then(|p| slot.checked_add(p)) {
+                    Some(v) => *slot = v,
+                    None => return SmallPoly::overflowed(),
+                }
+            }
+        }
+        SmallPoly::build(c.into_iter().map(Some), len)
+    }
+    fn negated(&self) -> Self {
+        self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
+    }
+    /// Exact division; a coefficient `k` does not divide counts as an
+    /// overflow (the exact value is not in `ℤ[t]`).
+    fn div_small(&self, k: i64) -> Self {
+        let k = k as i128;
+        self.zip(&SmallPoly::zero(), move |x, _| {
+            (k != 0 && x % k == 0).then(|| x / k)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testutil::zpoly;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Every operation agrees with `ZPoly` or reports an overflow, and
+        /// small inputs never overflow.
+        #[test]
+        fn ring_ops_agree_with_zpoly(a in zpoly(6, 120), b in zpoly(6, 120)) {
+            let (sa, sb) = (SmallPoly::from_zpoly(&a), SmallPoly::from_zpoly(&b));
+            prop_assert_eq!(sa.is_some(), a.max_bits() <= 127);
+            let (Some(sa), Some(sb)) = (sa, sb) else { return Ok(()) };
+            let check = |s: SmallPoly, z: ZPoly, small: bool| -> Result<(), TestCaseError> {
+                match s.to_zpoly() {
+                    Some(p) => prop_assert_eq!(p, z),
+                    None => prop_assert!(!small),
+                }
+                Ok(())
+            };
+            let small = a.max_bits() < 60 && b.max_bits() < 60;
+            check(sa.plus(&sb), &a + &b, small)?;
+            check(sa.minus(&sb), &a - &b, small)?;
+            check(sa.times(&sb), &a * &b, small)?;
+            check(sa.negated(), -&a, small)?;
+            check(sa.times(&SmallPoly::from_i64(6)).div_small(3), &a * &ZPoly::from_i64s(&[2]), small)?;
+        }
+    }
+
+    #[test]
+    fn overflow_is_sticky() {
+        let big = SmallPoly::from_i64(i64::MAX);
+        let over = big.times(&big).times(&big);
+        assert!(over.to_zpoly().is_none() && !over.is_zero());
+        assert!(over.minus(&over).to_zpoly().is_none());
+        let x = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[0, 1])).unwrap();
+        let mut p = SmallPoly::one();
+        for _ in 0..SmallPoly::MAX_DEGREE {
+            p = p.times(&x);
+        }
+        assert!(p.to_zpoly().is_some());
+        assert!(p.times(&x).to_zpoly().is_none(), "degree past the capacity");
+    }
+}
