@@ -252,6 +252,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
             // its roots (crate::signs).
             let sr0 = coefficients.polynomial(Quantity::Sr0);
             stats.deg_sr0 = sr0.degree();
+            stats.sr0_formed = true;
             match candidates(&f, sr0, &coefficients, state0, &mut stats) {
                 Candidates::Throughout(state) => {
                     found.throughout = Some(state);

@@ -43,6 +43,7 @@ pub fn to_json(outcome: &Outcome) -> Value {
             "deg_candidates": s.deg_candidates,
             "branch": s.branch,
             "candidates": s.candidates,
+            "sr0_formed": s.sr0_formed,
         },
     })
 }

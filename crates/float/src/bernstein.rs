@@ -338,7 +338,8 @@ impl RingOps for BernsteinF64 {
         BernsteinF64 {
             val: vec![v as f64],
             mag: vec![(v as f64).abs()],
-            rounds: 0,
+            // Exact below 2^53 in magnitude, one rounding beyond.
+            rounds: u64::from(v.unsigned_abs() > 1 << 53),
             tiny: 0.0,
         }
     }

@@ -158,6 +158,8 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     filter_only: bool,
     /// A filter-only isolation met a sign it could not prove.
     undecided: bool,
+    /// Splits of nodes with unsigned coefficients left (filter only).
+    budget: usize,
 }
 
 impl RootIter<Arc<SignProbe>> {
@@ -192,6 +194,7 @@ impl RootIter<Arc<SignProbe>> {
             stack,
             filter_only: false,
             undecided: false,
+            budget: 0,
         }
     }
 }
@@ -199,10 +202,11 @@ impl RootIter<Arc<SignProbe>> {
 impl<M: SignModel + Clone> RootIter<M> {
     /// The roots in `[lo, hi]` of the squarefree function of `model`, from
     /// `coeffs`: enclosures of its Bernstein coefficients over `[lo, hi]`
-    /// times one positive constant. Only the filter is used: where it
-    /// cannot prove a sign (a coefficient's enclosure holds 0, including a
-    /// root at `lo` or `hi`, a multiple root, or roots closer than
-    /// `2^(−64)` of the interval) the iteration ends early and
+    /// times one positive constant. Only the filter is used: a node with a
+    /// coefficient it cannot sign (an enclosure holding 0, as for an exact
+    /// zero) is split, within a budget of `2n + 16` such splits; past that,
+    /// at a root at `lo` or `hi`, at a multiple root, or at roots closer
+    /// than `2^(−64)` of the interval, the iteration ends early and
     /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
         let f = FloatBernstein::from_intervals(coeffs);
@@ -222,6 +226,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             stack,
             filter_only: true,
             undecided,
+            budget: 2 * coeffs.len() + 16,
         }
     }
 
@@ -229,6 +234,24 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// prove: the roots it yielded are proven, but there may be more.
     pub fn undecided(&self) -> bool {
         self.undecided
+    }
+
+    /// Halves `node` and stacks the halves (left on top), with the split
+    /// point itself when it is a root.
+    fn split_and_push(&mut self, node: Node) {
+        let mid = Rat::midpoint(&node.lo, &node.hi);
+        let (mut left, mut right, mid_sign) = node.split();
+        let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
+        if mid_sign == 0 {
+            right.set_endpoint_zero(false);
+        }
+        self.stack.push(Item::Node(right));
+        if mid_sign == 0 {
+            left.set_endpoint_zero(true);
+            self.stack
+                .push(Item::Root(RealRoot::exact(self.base.clone(), mid)));
+        }
+        self.stack.push(Item::Node(left));
     }
 
     /// Ends a filter-only isolation as undecided.
@@ -248,18 +271,29 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                 Item::Root(r) => return Some(r),
                 Item::Node(n) => n,
             };
-            let Some(signs) = node.signs() else {
-                if self.filter_only {
-                    return self.give_up();
+            let signs = match node.signs() {
+                Some(signs) => signs,
+                // Filter only: a coefficient it cannot sign (an exact zero,
+                // say) may be signed in the halves; split, within budget.
+                None if self.filter_only => {
+                    if node.depth >= FILTER_DEPTH || self.budget == 0 {
+                        return self.give_up();
+                    }
+                    self.budget -= 1;
+                    self.split_and_push(node);
+                    continue;
                 }
-                // The filter cannot sign a coefficient: redo this node exactly.
-                self.stack.push(Item::Node(Node::exact(
-                    self.base.exact(),
-                    node.lo,
-                    node.hi,
-                    node.depth,
-                )));
-                continue;
+                None => {
+                    // The filter cannot sign a coefficient: redo this node
+                    // exactly.
+                    self.stack.push(Item::Node(Node::exact(
+                        self.base.exact(),
+                        node.lo,
+                        node.hi,
+                        node.depth,
+                    )));
+                    continue;
+                }
             };
             let var = variations(&signs);
             if var == 0 {
@@ -277,19 +311,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             if self.filter_only && node.depth >= FILTER_DEPTH {
                 return self.give_up();
             }
-            let mid = Rat::midpoint(&node.lo, &node.hi);
-            let (mut left, mut right, mid_sign) = node.split();
-            let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
-            if mid_sign == 0 {
-                right.set_endpoint_zero(false);
-            }
-            self.stack.push(Item::Node(right));
-            if mid_sign == 0 {
-                left.set_endpoint_zero(true);
-                self.stack
-                    .push(Item::Root(RealRoot::exact(self.base.clone(), mid)));
-            }
-            self.stack.push(Item::Node(left));
+            self.split_and_push(node);
         }
         None
     }

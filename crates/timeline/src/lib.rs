@@ -100,6 +100,9 @@ pub struct Stats {
     pub branch: &'static str,
     /// Candidate instants examined.
     pub candidates: usize,
+    /// The exact path formed `sr0` (or `sr11`) as a polynomial: its
+    /// certified `f64` filter could not decide every sign, or `sr0 ≡ 0`.
+    pub sr0_formed: bool,
 }
 
 /// The answer of a CCD query over the span `[t0, t1]`.
