@@ -4,7 +4,7 @@
 
 use crate::signs::Coefficients;
 use crate::CcdError;
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
@@ -221,28 +221,36 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     };
     // The roots of sr0 from its certified f64 Bernstein coefficients, sr0
     // itself never formed (crate::signs); the exact polynomial only where
-    // that filter cannot prove a sign.
-    let filtered = RootIter::filtered(
-        coefficients.model(Quantity::Sr0),
-        &Rat::zero(),
-        &Rat::one(),
-        &ccd_float::certified_bernstein(&f, Quantity::Sr0),
-    );
-    let mut filtered_stats = Stats {
-        branch: "sr0",
-        deg_sr0: coefficients.sr0_degree(),
-        ..stats.clone()
-    };
-    filtered_stats.deg_candidates = filtered_stats.deg_sr0;
-    let zeros = [Quantity::Sr0];
-    let contacts = match contacts_at(
-        filtered,
-        &coefficients,
-        &zeros,
-        &width,
-        opts,
-        &mut filtered_stats,
-    ) {
+    // that filter cannot prove a sign, or when sr0(1/2) = 0 (one cheap
+    // exact evaluation: sr0 ≡ 0, the sr11 branch, is common, and the
+    // filter could not decide it).
+    let sr0 = coefficients.model(Quantity::Sr0);
+    let mut filtered_stats = stats.clone();
+    let half = Rat::from_frac(1, 2);
+    let nonzero_at_half = sr0
+        .enclose(Interval::from_rat(&half))
+        .sign()
+        .is_some_and(|s| s != 0)
+        || sr0.sign_at(&half) != 0;
+    let filtered = nonzero_at_half
+        .then(|| {
+            filtered_stats.branch = "sr0";
+            filtered_stats.deg_sr0 = coefficients.sr0_degree();
+            filtered_stats.deg_candidates = filtered_stats.deg_sr0;
+            let bernstein = ccd_float::certified_bernstein(&f, Quantity::Sr0);
+            let roots = RootIter::filtered(sr0, &Rat::zero(), &Rat::one(), &bernstein);
+            let zeros = [Quantity::Sr0];
+            contacts_at(
+                roots,
+                &coefficients,
+                &zeros,
+                &width,
+                opts,
+                &mut filtered_stats,
+            )
+        })
+        .flatten();
+    let contacts = match filtered {
         Some(contacts) => {
             stats = filtered_stats;
             Some(contacts)

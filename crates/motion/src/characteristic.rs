@@ -71,14 +71,16 @@ impl CharPoly {
         // in ZPoly if a number does not.
         let f = if na.max(nb) <= ma.max(mb) {
             let (qa, qb) = (a.quadric(), b.quadric());
-            small(&qa)
-                .zip(small(&qb))
+            worth_small(&[&qa, &qb], 4)
+                .then(|| small(&qa).zip(small(&qb)))
+                .flatten()
                 .and_then(|(x, y)| lift(characteristic(&x, &y)))
                 .unwrap_or_else(|| characteristic(&qa, &qb))
         } else {
             let (pa, pb) = (a.placement(), b.placement());
-            small(pa)
-                .zip(small(pb))
+            worth_small(&[pa, pb], 8)
+                .then(|| small(pa).zip(small(pb)))
+                .flatten()
                 .zip(small(&a.diagonal).zip(small(&b.diagonal)))
                 .and_then(|((x, y), (dx, dy))| lift(placed_characteristic(&x, &dx, &y, &dy)))
                 .unwrap_or_else(|| placed_characteristic(pa, &a.diagonal, pb, &b.diagonal))
@@ -140,6 +142,16 @@ impl<T: SmallEntries, const N: usize> SmallEntries for [T; N] {
         let v: Option<Vec<T::Small>> = self.iter().map(T::to_small).collect();
         v?.try_into().ok()
     }
+}
+
+/// Whether `f` from these matrices, a sum of products of `factors` entries
+/// each, is likely to fit [`SmallPoly`] (degree and size estimates only:
+/// an overflow is detected anyway, this just skips a doomed attempt).
+fn worth_small(mats: &[&Mat4<ZPoly>], factors: usize) -> bool {
+    let entries = || mats.iter().flat_map(|m| m.iter().flatten());
+    let degree = entries().filter_map(ZPoly::degree).max().unwrap_or(0);
+    let bits = entries().map(ZPoly::max_bits).max().unwrap_or(0) as usize;
+    degree * factors <= SmallPoly::MAX_DEGREE && (bits + degree) * factors + 24 <= 126
 }
 
 /// The exact coefficients, unless a [`SmallPoly`] step overflowed.
