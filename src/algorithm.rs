@@ -4,7 +4,7 @@
 
 use crate::signs::Coefficients;
 use crate::CcdError;
-use ccd_arith::{Int, Interval, Rat};
+use ccd_arith::{Int, Rat};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
@@ -179,6 +179,43 @@ fn contacts_at<M: SignModel + Clone>(
     (!roots.undecided()).then_some(contacts)
 }
 
+/// Algorithm 1's `sr0` branch without forming `sr0`: its roots from its
+/// certified `f64` Bernstein coefficients, everything else from `f`'s
+/// coefficients (crate::signs). `None` (the caller forms `sr0`) when
+/// `sr0(1/2) = 0` — mostly `sr0 ≡ 0`, the `sr11` branch, which the filter
+/// could not decide — or when the filter cannot prove a sign; otherwise the
+/// contacts and the run's statistics.
+fn filtered_contacts(
+    f: &CharPoly,
+    coefficients: &Coefficients,
+    width: &Rat,
+    opts: &Options,
+    stats: &Stats,
+) -> Option<(Vec<Instant>, Stats)> {
+    let sr0 = coefficients.model(Quantity::Sr0);
+    if sr0.filtered_sign_at(&Rat::from_frac(1, 2)) == 0 {
+        return None;
+    }
+    let deg_sr0 = coefficients.sr0_degree();
+    let mut stats = Stats {
+        branch: "sr0",
+        deg_sr0,
+        deg_candidates: deg_sr0,
+        ..stats.clone()
+    };
+    let bernstein = ccd_float::certified_bernstein(f, Quantity::Sr0);
+    let roots = RootIter::filtered(sr0, &Rat::zero(), &Rat::one(), &bernstein);
+    let contacts = contacts_at(
+        roots,
+        coefficients,
+        &[Quantity::Sr0],
+        width,
+        opts,
+        &mut stats,
+    )?;
+    Some((contacts, stats))
+}
+
 /// Runs Algorithm 1 on a rational scene.
 pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     let (a, b) = placed(scene)?;
@@ -209,7 +246,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     }
     let f = CharPoly::from_placed(&a, &b);
     let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
-    let coefficients = Coefficients::new(&f.coeffs);
+    let coefficients = Coefficients::new(&f);
     stats.deg_f = f.degree();
     let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");
     let mut found = Findings {
@@ -219,39 +256,8 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    // The roots of sr0 from its certified f64 Bernstein coefficients, sr0
-    // itself never formed (crate::signs); the exact polynomial only where
-    // that filter cannot prove a sign, or when sr0(1/2) = 0 (one cheap
-    // exact evaluation: sr0 ≡ 0, the sr11 branch, is common, and the
-    // filter could not decide it).
-    let sr0 = coefficients.model(Quantity::Sr0);
-    let mut filtered_stats = stats.clone();
-    let half = Rat::from_frac(1, 2);
-    let nonzero_at_half = sr0
-        .enclose(Interval::from_rat(&half))
-        .sign()
-        .is_some_and(|s| s != 0)
-        || sr0.sign_at(&half) != 0;
-    let filtered = nonzero_at_half
-        .then(|| {
-            filtered_stats.branch = "sr0";
-            filtered_stats.deg_sr0 = coefficients.sr0_degree();
-            filtered_stats.deg_candidates = filtered_stats.deg_sr0;
-            let bernstein = ccd_float::certified_bernstein(&f, Quantity::Sr0);
-            let roots = RootIter::filtered(sr0, &Rat::zero(), &Rat::one(), &bernstein);
-            let zeros = [Quantity::Sr0];
-            contacts_at(
-                roots,
-                &coefficients,
-                &zeros,
-                &width,
-                opts,
-                &mut filtered_stats,
-            )
-        })
-        .flatten();
-    let contacts = match filtered {
-        Some(contacts) => {
+    let contacts = match filtered_contacts(&f, &coefficients, &width, opts, &stats) {
+        Some((contacts, filtered_stats)) => {
             stats = filtered_stats;
             Some(contacts)
         }

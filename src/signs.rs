@@ -23,6 +23,7 @@
 //! products of the closed forms).
 
 use ccd_arith::{Dual, Int, Interval, Rat, RingOps};
+use ccd_motion::CharPoly;
 use ccd_poly::ZPoly;
 use ccd_solver::{ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, Quantity};
@@ -36,15 +37,16 @@ const VIEW_BITS: i64 = 100;
 /// The coefficients of `f(λ; t)` (high → low in λ) and what the sign models
 /// need of them, shared by the models of all quantities.
 pub(crate) struct Coefficients<'a> {
-    coeffs: &'a [ZPoly; 5],
+    f: &'a CharPoly,
     /// `f_k · 2^(−shift)` in `f64`.
     views: [ScaledPoly; 5],
     shift: i64,
-    /// The common degree bound `n`.
-    degree: usize,
     /// The closed forms as polynomials, each formed on first need
     /// (indexed by [`slot`]).
     polys: [OnceLock<ZPoly>; 5],
+    /// Each closed form's constant term and nominal top coefficient
+    /// ([`Coefficients::extremes`]), likewise.
+    extremes: [OnceLock<(Int, Int)>; 5],
     /// The last point's jets: the quantities at one root are asked for at
     /// the same point.
     last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
@@ -57,15 +59,15 @@ pub(crate) struct Coefficients<'a> {
 type Jet2 = Dual<Dual<Interval>>;
 
 impl<'a> Coefficients<'a> {
-    pub(crate) fn new(coeffs: &'a [ZPoly; 5]) -> Coefficients<'a> {
-        let bits = coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0) as i64;
+    pub(crate) fn new(f: &'a CharPoly) -> Coefficients<'a> {
+        let bits = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0) as i64;
         let shift = (bits - VIEW_BITS).max(0);
         Coefficients {
-            coeffs,
-            views: std::array::from_fn(|k| ScaledPoly::with_shift(&coeffs[k], shift)),
+            f,
+            views: std::array::from_fn(|k| ScaledPoly::with_shift(&f.coeffs[k], shift)),
             shift,
-            degree: coeffs.iter().filter_map(ZPoly::degree).max().unwrap_or(0),
             polys: Default::default(),
+            extremes: Default::default(),
             last: RefCell::new(None),
             last_box: RefCell::new(None),
         }
@@ -75,34 +77,36 @@ impl<'a> Coefficients<'a> {
     /// once, with only the products it needs.
     pub(crate) fn polynomial(&self, q: Quantity) -> &ZPoly {
         self.polys[slot(q)]
-            .get_or_init(|| closed_form(self.coeffs, q).expect("a closed form, not Var"))
+            .get_or_init(|| closed_form(&self.f.coeffs, q).expect("a closed form, not Var"))
     }
 
-    /// The coefficient of `t^(i·w)` in the closed form `q` of weight `w`,
-    /// for `i = 0` (its constant term `q(0)`) or `i = n` (its nominal top
-    /// coefficient): `q` is homogeneous of degree `w` in the `f_k`, so these
-    /// are `q` of the `f_k`'s coefficients of `t^i`.
-    fn extreme_coefficient(&self, q: Quantity, i: usize) -> Int {
-        let c: [Int; 5] = std::array::from_fn(|k| {
-            self.coeffs[k]
-                .coeffs()
-                .get(i)
-                .cloned()
-                .unwrap_or_else(Int::zero)
-        });
-        closed_form(&c, q).expect("a closed form, not Var")
+    /// The constant term `q(0)` and the nominal top coefficient (of
+    /// `t^(w·n)`) of the closed form `q` of weight `w`, computed once: `q` is
+    /// homogeneous of degree `w` in the `f_k`, so these are `q` of the
+    /// `f_k`'s coefficients of `t^0` and of `t^n`.
+    fn extremes(&self, q: Quantity) -> &(Int, Int) {
+        self.extremes[slot(q)].get_or_init(|| {
+            let at = |i: usize| {
+                let c: [Int; 5] = std::array::from_fn(|k| {
+                    self.f.coeffs[k]
+                        .coeffs()
+                        .get(i)
+                        .cloned()
+                        .unwrap_or_else(Int::zero)
+                });
+                closed_form(&c, q).expect("a closed form, not Var")
+            };
+            (at(0), at(self.f.degree()))
+        })
     }
 
     /// `deg sr0` (`None` when `sr0 ≡ 0`), without forming `sr0` when its
     /// nominal top coefficient (of `t^(6n)`) is nonzero.
     pub(crate) fn sr0_degree(&self) -> Option<usize> {
-        if self
-            .extreme_coefficient(Quantity::Sr0, self.degree)
-            .is_zero()
-        {
+        if self.extremes(Quantity::Sr0).1.is_zero() {
             self.polynomial(Quantity::Sr0).degree()
         } else {
-            Some(6 * self.degree)
+            Some(6 * self.f.degree())
         }
     }
 
@@ -162,14 +166,14 @@ impl ClosedForm<'_, '_> {
     }
 
     fn compute_jets(&self, x: &Rat) -> [Dual<Int>; 5] {
-        let n = self.f.degree;
+        let n = self.f.f.degree();
         // v·b^e: a shift at dyadic points.
         let times_b_pow = |v: Int, e: usize| match x.dyadic_exponent() {
             Some(j) => v.shl(j * e as u64),
             None => &v * &x.denom().pow(e as u32),
         };
         std::array::from_fn(|k| {
-            let p = &self.f.coeffs[k];
+            let p = &self.f.f.coeffs[k];
             let nk = p.degree().unwrap_or(0);
             let (v, d) = p.eval_homogeneous_with_derivative(x);
             // v = b^nk·f(x), d = b^(nk−1)·f′(x) (d = 0 for constants).
@@ -229,7 +233,7 @@ impl SignModel for ClosedForm<'_, '_> {
         let j = m.dyadic_exponent().expect("a dyadic point") as i64;
         let w = weight(self.q);
         let q = self.of(&self.jets(m));
-        let scale = j * self.f.degree as i64 * w + self.f.shift * w;
+        let scale = j * self.f.f.degree() as i64 * w + self.f.shift * w;
         ExactJet {
             value: q.v,
             slope: q.d,
@@ -250,18 +254,24 @@ impl SignModel for ClosedForm<'_, '_> {
     /// The rational root theorem on `q`'s constant term and nominal top
     /// coefficient (a zero one, i.e. a lower degree, tells nothing).
     fn admits_root_at(&self, x: &Rat) -> bool {
-        let first = self.f.extreme_coefficient(self.q, 0);
+        let (first, last) = self.f.extremes(self.q);
         if x.numer().is_zero() {
             return first.is_zero();
         }
-        let last = self.f.extreme_coefficient(self.q, self.f.degree);
         (last.is_zero() || last.is_divisible_by(x.denom()))
             && (first.is_zero() || first.is_divisible_by(x.numer()))
     }
 
+    /// The closed form of the values `b^n·f_k(a/b)` at `x = a/b`
+    /// ([`CharPoly::at_scaled`], no derivatives; `b^(nw) > 0` does not
+    /// change the sign), or of the last point's jets when `x` is that point.
     fn sign_at(&self, x: &Rat) -> i32 {
-        // b^(nw) > 0 does not change the sign.
-        self.of(&self.jets(x).map(|jet| jet.v)).signum()
+        if let Some((at, jets)) = &*self.f.last.borrow() {
+            if at == x {
+                return self.of(&jets.each_ref().map(|jet| jet.v.clone())).signum();
+            }
+        }
+        self.of(&self.f.f.at_scaled(x)).signum()
     }
 
     fn exact(&self) -> &ZPoly {
@@ -289,7 +299,8 @@ mod tests {
             a in -64i64..64, j in 0u64..8, b in 1i64..9,
         ) {
             let coeffs: [ZPoly; 5] = std::array::from_fn(|k| poly(&raw[k]));
-            let f = Coefficients::new(&coeffs);
+            let cp = CharPoly { coeffs: coeffs.clone() };
+            let f = Coefficients::new(&cp);
             let inv = closed_forms(&coeffs);
             let m = Rat::dyadic(Int::from(a), j);
             let x = Rat::from_frac(a, b);

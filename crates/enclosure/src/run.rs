@@ -143,8 +143,9 @@ fn validate(a: &Body, b: &Body, span: &[Rat; 2], options: &Options) -> Result<()
             other => {
                 // The rational kinds are checked exactly (vanishing weights
                 // or quaternion curves, singular affine maps).
+                // (placing a body validates it; no matrix is formed).
                 if !matches!(other, Motion::Static { .. }) {
-                    ccd_motion::moving_quadric(body, span)
+                    ccd_motion::placed_quadric(body, span)
                         .map_err(|source| EnclosureError::Motion { body: name, source })?;
                 }
             }

@@ -197,7 +197,7 @@ impl BernsteinF64 {
 
     /// Certified enclosures of the ordinary Bernstein coefficients
     /// `b_i = p̃_i / C(n, i)` of the exact polynomial this one approximates
-    /// (module docs): `p̃_i ± (γ_N·mag_i·(1 + 2^(−40)) + 3A)`, rounded
+    /// (module docs): `p̃_i ± (γ_N·(1 + γ_N)·mag_i + 3A)`, rounded
     /// outward, over an enclosure of the binomial. Unbounded if the error analysis
     /// does not apply (`γ_N > 1/2`, or a value that is not finite).
     pub fn enclosures(&self) -> Vec<Interval> {
@@ -210,7 +210,11 @@ impl BernsteinF64 {
         if nu >= 0.5 {
             return vec![whole; self.val.len()];
         }
-        let gamma = nu / (1.0 - nu) * (1.0 + 2f64.powi(-40));
+        // γ_N against the exact magnitude, which the computed one
+        // undercuts by at most a factor 1 + γ_N; 2^(−50) covers this
+        // line's own roundings.
+        let g = nu / (1.0 - nu);
+        let gamma = g * (1.0 + g) * (1.0 + 2f64.powi(-50));
         // C(n, i) enclosed: C(n, i + 1) = C(n, i)·(n − i)/(i + 1), rounded
         // outward.
         let n = self.degree();

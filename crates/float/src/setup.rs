@@ -85,7 +85,7 @@ fn int_to_f64_scaled(x: &Int, shift: i64) -> f64 {
 /// assert!(!p.inv.sr11.is_negligible(1e-10));
 /// ```
 pub fn prepare(f: &CharPoly) -> Prepared {
-    let (coeffs, _) = inputs(f);
+    let coeffs = inputs(f);
     let inv = closed_forms(&coeffs);
     Prepared {
         f: coeffs,
@@ -94,34 +94,40 @@ pub fn prepare(f: &CharPoly) -> Prepared {
     }
 }
 
-/// `f`'s coefficients, rescaled (see [`prepare`]) and rounded: `c_k`
-/// (the coefficient of `λ^k`) becomes `c_k·2^(j·k − shift)`; returns also
-/// `(j, shift)`.
-fn inputs(f: &CharPoly) -> ([BernsteinF64; 5], (i64, i64)) {
-    let scaled: [Vec<Int>; 5] = f.coeffs.each_ref().map(ZPoly::scaled_bernstein);
+/// The rescaling of [`prepare`] for the scaled Bernstein coefficients of
+/// `f`'s coefficients (`scaled[i]` of `λ^(4 − i)`): `c_k` (the coefficient
+/// of `λ^k`) becomes `c_k·2^(j·k − shift)`; returns `(j, shift)`.
+fn scaling(scaled: &[Vec<Int>; 5]) -> (i64, i64) {
     let bits = |c: &Vec<Int>| c.iter().map(Int::bits).max().unwrap_or(0) as i64;
-    // coeffs[i] is the coefficient of λ^(4 − i).
     let b: [i64; 5] = scaled.each_ref().map(bits);
-    let j = if f.coeffs[0].is_zero() || f.coeffs[4].is_zero() {
+    // b = 0 exactly for a zero coefficient.
+    let j = if b[0] == 0 || b[4] == 0 {
         0
     } else {
         (b[4] - b[0]).div_euclid(4)
     };
     let exp = |i: usize| (4 - i as i64) * j;
     let shift = (0..5)
-        .filter(|&i| !f.coeffs[i].is_zero())
+        .filter(|&i| b[i] != 0)
         .map(|i| b[i] + exp(i))
         .max()
         .unwrap_or(0);
-    let coeffs = std::array::from_fn(|i| {
+    (j, shift)
+}
+
+/// `f`'s coefficients, rescaled ([`scaling`]) and rounded.
+fn inputs(f: &CharPoly) -> [BernsteinF64; 5] {
+    let scaled: [Vec<Int>; 5] = f.coeffs.each_ref().map(ZPoly::scaled_bernstein);
+    let (j, shift) = scaling(&scaled);
+    std::array::from_fn(|i| {
+        let exp = (4 - i as i64) * j;
         BernsteinF64::from_scaled(
             scaled[i]
                 .iter()
-                .map(|c| int_to_f64_scaled(c, shift - exp(i)))
+                .map(|c| int_to_f64_scaled(c, shift - exp))
                 .collect(),
         )
-    });
-    (coeffs, (j, shift))
+    })
 }
 
 /// Certified enclosures of the Bernstein coefficients on `[0, 1]` of the
@@ -133,7 +139,7 @@ fn inputs(f: &CharPoly) -> ([BernsteinF64; 5], (i64, i64)) {
 /// `sr0`; a coefficient whose sign they leave open sends it back to the
 /// exact polynomial.
 pub fn certified_bernstein(f: &CharPoly, q: Quantity) -> Vec<Interval> {
-    closed_form(&inputs(f).0, q).map_or_else(Vec::new, |p| p.enclosures())
+    closed_form(&inputs(f), q).map_or_else(Vec::new, |p| p.enclosures())
 }
 
 #[cfg(test)]
@@ -194,7 +200,7 @@ mod tests {
     /// 6 and isobaric of weight 12 in the `c_k`).
     fn assert_encloses_sr0(f: &CharPoly) {
         let enc = certified_bernstein(f, Quantity::Sr0);
-        let (_, (j, shift)) = inputs(f);
+        let (j, shift) = scaling(&f.coeffs.each_ref().map(ZPoly::scaled_bernstein));
         let sr0 = closed_form(&f.coeffs, Quantity::Sr0).expect("sr0");
         let n = enc.len() - 1;
         // sr0 in degree n on [0, 1], exactly.
@@ -202,29 +208,10 @@ mod tests {
             vec![Rat::zero(); n + 1]
         } else {
             let b = ccd_poly::Bernstein::from_power(&sr0, &Rat::zero(), &Rat::one());
-            let m = b.coeffs().len() - 1;
-            let elevated = ZPoly::new(
-                (0..=n)
-                    .map(|i| {
-                        (0..=m.min(i))
-                            .filter(|&k| i - k <= n - m)
-                            .fold(Int::zero(), |acc, k| {
-                                acc + &b.coeffs()[k]
-                                    * &ccd_poly::binomials(m)[k]
-                                    * &ccd_poly::binomials(n - m)[i - k]
-                            })
-                    })
-                    .collect(),
-            );
-            (0..=n)
-                .map(|i| {
-                    b.scale()
-                        * &Rat::new(
-                            elevated.coeffs().get(i).cloned().unwrap_or_else(Int::zero),
-                            ccd_poly::binomials(n)[i].clone(),
-                        )
-                        .expect("nonzero")
-                })
+            let e = b.elevate(n - b.degree());
+            e.coeffs()
+                .iter()
+                .map(|c| e.scale() * &Rat::from(c.clone()))
                 .collect()
         };
         for (iv, b) in enc.iter().zip(&exact) {

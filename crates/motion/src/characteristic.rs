@@ -72,18 +72,20 @@ impl CharPoly {
         let f = if na.max(nb) <= ma.max(mb) {
             let (qa, qb) = (a.quadric(), b.quadric());
             worth_small(&[&qa, &qb], 4)
-                .then(|| small(&qa).zip(small(&qb)))
+                .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
                 .flatten()
-                .and_then(|(x, y)| lift(characteristic(&x, &y)))
                 .unwrap_or_else(|| characteristic(&qa, &qb))
         } else {
             let (pa, pb) = (a.placement(), b.placement());
-            worth_small(&[pa, pb], 8)
-                .then(|| small(pa).zip(small(pb)))
+            let (da, db) = (&a.diagonal, &b.diagonal);
+            worth_small(&[&pa, &pb], 8)
+                .then(|| {
+                    let [x, y] = [&pa, &pb].map(lowered);
+                    let [dx, dy] = [da, db].map(|d| d.each_ref().map(SmallPoly::lowered));
+                    lift(placed_characteristic(&x, &dx, &y, &dy))
+                })
                 .flatten()
-                .zip(small(&a.diagonal).zip(small(&b.diagonal)))
-                .and_then(|((x, y), (dx, dy))| lift(placed_characteristic(&x, &dx, &y, &dy)))
-                .unwrap_or_else(|| placed_characteristic(pa, &a.diagonal, pb, &b.diagonal))
+                .unwrap_or_else(|| placed_characteristic(&pa, da, &pb, db))
         };
         CharPoly {
             coeffs: normalise_with(f, candidates),
@@ -117,31 +119,11 @@ impl CharPoly {
     }
 }
 
-/// The entries in [`SmallPoly`], if they fit (arrays of any shape: rows
-/// of a matrix, or a diagonal).
-fn small<T: SmallEntries>(m: &T) -> Option<T::Small> {
-    m.to_small()
-}
-
-/// Arrays of [`ZPoly`] that have a [`SmallPoly`] image.
-trait SmallEntries {
-    type Small;
-    fn to_small(&self) -> Option<Self::Small>;
-}
-
-impl SmallEntries for ZPoly {
-    type Small = SmallPoly;
-    fn to_small(&self) -> Option<SmallPoly> {
-        SmallPoly::from_zpoly(self)
-    }
-}
-
-impl<T: SmallEntries, const N: usize> SmallEntries for [T; N] {
-    type Small = [T::Small; N];
-    fn to_small(&self) -> Option<[T::Small; N]> {
-        let v: Option<Vec<T::Small>> = self.iter().map(T::to_small).collect();
-        v?.try_into().ok()
-    }
+/// A matrix in [`SmallPoly`] (entries that do not fit come in overflowed,
+/// and so do the results they reach).
+fn lowered(m: &Mat4<ZPoly>) -> Mat4<SmallPoly> {
+    m.each_ref()
+        .map(|row| row.each_ref().map(SmallPoly::lowered))
 }
 
 /// Whether `f` from these matrices, a sum of products of `factors` entries

@@ -2,54 +2,19 @@
 
 use crate::kinds::Bezier;
 use ccd_arith::{Int, Rat};
-use ccd_poly::{QPoly, ZPoly};
+use ccd_poly::{Bernstein, QPoly};
 
-/// `Σ Bᵢⁿ(u)·vᵢ` in the power basis, for degree `n`: the coefficient of
-/// `uʲ` is `C(n, j)·Σ_{i<=j} (−1)^(j−i)·C(j, i)·vᵢ`, computed on the integer
-/// vector of [`QPoly::from_rats`] (`vᵢ = s·Pᵢ`; the map is linear, so no
-/// rational arithmetic). Pascal's triangle is formed once for all the
-/// coordinates of a curve.
-struct PowerMap {
-    /// Rows `0..=n` of Pascal's triangle.
-    binom: Vec<Vec<Int>>,
-}
-
-impl PowerMap {
-    fn new(n: usize) -> PowerMap {
-        let mut binom: Vec<Vec<Int>> = vec![vec![Int::one()]];
-        for r in 1..=n {
-            let prev = &binom[r - 1];
-            let mut row = vec![Int::one(); r + 1];
-            for k in 1..r {
-                row[k] = &prev[k - 1] + &prev[k];
-            }
-            binom.push(row);
-        }
-        PowerMap { binom }
-    }
-
-    fn apply(&self, values: &[Rat]) -> QPoly {
-        let n = self.binom.len() - 1;
-        debug_assert_eq!(values.len(), n + 1);
-        let v = QPoly::from_rats(values);
-        let coeffs: Vec<Int> = (0..=n)
-            .map(|j| {
-                let s = self.binom[j]
-                    .iter()
-                    .enumerate()
-                    .fold(Int::zero(), |s, (i, c)| {
-                        let term = c * &v.prim().coeff(i);
-                        if (j - i) % 2 == 0 {
-                            s + term
-                        } else {
-                            s - term
-                        }
-                    });
-                s * &self.binom[n][j]
-            })
-            .collect();
-        QPoly::from_parts(v.scale().clone(), ZPoly::new(coeffs))
-    }
+/// `Σ Bᵢⁿ(u)·vᵢ` in the power basis: [`Bernstein::to_power`] on the
+/// integer vector of the values over their common denominator (additions
+/// only, no rational arithmetic).
+fn bernstein_to_power(values: &[Rat]) -> QPoly {
+    let den = values.iter().fold(Int::one(), |l, v| l.lcm(v.denom()));
+    let ints = values
+        .iter()
+        .map(|v| v.numer() * &den.div_exact(v.denom()))
+        .collect();
+    let scale = Rat::new(Int::one(), den).expect("lcm of positive denominators is positive");
+    Bernstein::from_parts(Rat::zero(), Rat::one(), scale, ints).to_power()
 }
 
 /// A (rational) Bézier curve of `N`-vectors as polynomial numerators and
@@ -65,7 +30,6 @@ pub struct PolyCurve<const N: usize> {
 /// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`).
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
     let weight = |i: usize| curve.weights.as_ref().map_or(Rat::one(), |w| w[i].clone());
-    let map = PowerMap::new(curve.points.len().saturating_sub(1));
     let numerators = std::array::from_fn(|k| {
         let vals: Vec<Rat> = curve
             .points
@@ -73,10 +37,10 @@ pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
             .enumerate()
             .map(|(i, p)| &p[k] * &weight(i))
             .collect();
-        map.apply(&vals)
+        bernstein_to_power(&vals)
     });
     let denominator = match &curve.weights {
-        Some(w) => map.apply(w),
+        Some(w) => bernstein_to_power(w),
         None => QPoly::one(),
     };
     PolyCurve {
@@ -92,11 +56,11 @@ mod tests {
     #[test]
     fn power_form_interpolates_the_ends_and_midpoint() {
         let v = [Rat::from(11), Rat::from(-1)];
-        let p = PowerMap::new(1).apply(&v);
+        let p = bernstein_to_power(&v);
         assert_eq!(p.eval_rat(&Rat::zero()), Rat::from(11));
         assert_eq!(p.eval_rat(&Rat::one()), Rat::from(-1));
         // Quadratic: B(1/2) = (v0 + 2 v1 + v2)/4.
-        let q = PowerMap::new(2).apply(&[Rat::from(1), Rat::from(5), Rat::from(-3)]);
+        let q = bernstein_to_power(&[Rat::from(1), Rat::from(5), Rat::from(-3)]);
         assert_eq!(q.eval_rat(&Rat::from_frac(1, 2)), Rat::from(2));
     }
 }

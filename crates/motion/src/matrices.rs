@@ -11,7 +11,6 @@ use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, congruence, det3, integral, norm2,
     rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
 };
-use std::sync::OnceLock;
 
 fn constant_vec<const N: usize>(v: &[Rat; N]) -> [QPoly; N] {
     std::array::from_fn(|i| QPoly::constant(v[i].clone()))
@@ -222,13 +221,11 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
 }
 
 /// A placed body: its placement, its body quadric and what is known about
-/// the determinant of the placement. The integer matrices are formed on
-/// first use only.
-#[derive(Debug)]
+/// the determinant of the placement. The integer matrices are formed only
+/// when asked for (each route to `f` needs one of them).
+#[derive(Clone, Debug, PartialEq)]
 pub struct PlacedQuadric {
     frame: Frame<QPoly>,
-    placement: OnceLock<Mat4<ZPoly>>,
-    inverse: OnceLock<Mat4<ZPoly>>,
     /// The body quadric `diag(D)` (interior `XᵀDX < 0`), scaled to integers.
     pub diagonal: [ZPoly; 4],
     /// Primitive polynomials nonzero on the span such that `det M(u)` is a
@@ -239,16 +236,14 @@ pub struct PlacedQuadric {
 impl PlacedQuadric {
     /// The homogeneous body → world matrix `M(u)` with integer polynomial
     /// entries, up to a factor nonzero on the span.
-    pub fn placement(&self) -> &Mat4<ZPoly> {
-        self.placement
-            .get_or_init(|| to_integer_matrix(&self.frame.forward()))
+    pub fn placement(&self) -> Mat4<ZPoly> {
+        to_integer_matrix(&self.frame.forward())
     }
 
     /// The world → body matrix `N(u) ∝ M(u)⁻¹` with integer polynomial
     /// entries, up to a factor nonzero on the span.
-    pub fn inverse(&self) -> &Mat4<ZPoly> {
-        self.inverse
-            .get_or_init(|| to_integer_matrix(&self.frame.inverse()))
+    pub fn inverse(&self) -> Mat4<ZPoly> {
+        to_integer_matrix(&self.frame.inverse())
     }
 
     /// Upper bounds `(deg M, deg N)` on the entries' degrees of
@@ -262,7 +257,7 @@ impl PlacedQuadric {
     /// The moving quadric `A(u) = N(u)ᵀ·D·N(u)` in world coordinates
     /// (interior `XᵀA(u)X < 0`), up to a factor positive on the span.
     pub fn quadric(&self) -> Mat4<ZPoly> {
-        congruence(self.inverse(), &self.diagonal)
+        congruence(&self.inverse(), &self.diagonal)
     }
 
     /// The quadric at one parameter `u`, exactly, scaled to integers (a
@@ -285,8 +280,6 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
         .collect();
     Ok(PlacedQuadric {
         frame,
-        placement: OnceLock::new(),
-        inverse: OnceLock::new(),
         diagonal: rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant),
         det_factors,
     })

@@ -232,11 +232,13 @@ impl Bernstein {
     /// of `C(n,i) b_i`, then `value(t) = scale·P((t − lo)/w)`.
     pub fn to_power(&self) -> QPoly {
         let a = reverse_shift_reverse(times_binomials(&self.coeffs), -1);
+        let p = QPoly::from_parts(self.scale.clone(), ZPoly::new(a));
+        if self.lo.is_zero() && self.hi == Rat::one() {
+            return p;
+        }
         let w = &self.hi - &self.lo;
         let inv_w = Rat::one() / &w;
-        QPoly::from_zpoly(&ZPoly::new(a))
-            .compose_affine(&(-&(&self.lo * &inv_w)), &inv_w)
-            .mul_rat(&self.scale)
+        p.compose_affine(&(-&(&self.lo * &inv_w)), &inv_w)
     }
     /// The left end.
     pub fn lo(&self) -> &Rat {

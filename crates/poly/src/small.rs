@@ -69,9 +69,15 @@ impl SmallPoly {
         }
     }
 
+    /// `p`, overflowed if its degree or a coefficient does not fit (so a
+    /// computation on it reports the overflow at the end).
+    pub fn lowered(p: &ZPoly) -> SmallPoly {
+        SmallPoly::build(p.coeffs().iter().map(Int::to_i128), p.coeffs().len())
+    }
+
     /// `p` if its degree and coefficients fit.
     pub fn from_zpoly(p: &ZPoly) -> Option<SmallPoly> {
-        let q = SmallPoly::build(p.coeffs().iter().map(Int::to_i128), p.coeffs().len());
+        let q = SmallPoly::lowered(p);
         (!q.overflow).then_some(q)
     }
 
@@ -175,7 +181,9 @@ impl RingOps for SmallPoly {
     fn div_small(&self, k: i64) -> Self {
         let k = k as i128;
         self.zip(&SmallPoly::zero(), move |x, _| {
-            (k != 0 && x % k == 0).then(|| x / k)
+            (x.checked_rem(k) == Some(0))
+                .then(|| x.checked_div(k))
+                .flatten()
         })
     }
 }

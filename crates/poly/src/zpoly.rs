@@ -48,28 +48,32 @@ fn hom_horner_impl<const DERIVATIVE: bool>(c: &[Int], x: &Int, y: &Int) -> (Int,
     };
     let mut acc = last.clone();
     let mut dacc = Int::zero();
-    let mut step = |acc: &mut Int, term: Int| {
+    // acc ← acc·x + term, with `add` adding the term in place (and the
+    // derivative's Horner run on the old acc first).
+    let mut step = |acc: &mut Int, add: &dyn Fn(&mut Int)| {
         if DERIVATIVE {
             dacc = &dacc * x + &*acc;
         }
-        *acc = &*acc * x + term;
+        *acc = &*acc * x;
+        add(acc);
     };
     let k = y.trailing_zeros().unwrap_or(0);
     if y.is_one() {
         for ci in rest.iter().rev() {
-            step(&mut acc, ci.clone());
+            step(&mut acc, &|a| *a += ci);
         }
     } else if y.bits() == k + 1 {
         // y = 2^k (every dyadic point): c_i·y^(n−i) is a shift, so each
         // step costs time linear in the size of the numbers, not a product.
         for (j, ci) in rest.iter().rev().enumerate() {
-            step(&mut acc, ci.shl(k * (j as u64 + 1)));
+            step(&mut acc, &|a| *a += ci.shl(k * (j as u64 + 1)));
         }
     } else {
         let mut ypow = Int::one();
         for ci in rest.iter().rev() {
             ypow *= y;
-            step(&mut acc, ci * &ypow);
+            let yp = &ypow;
+            step(&mut acc, &|a| a.add_mul(ci, yp));
         }
     }
     (acc, dacc)
@@ -126,18 +130,16 @@ fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
 pub(crate) fn content_of(c: &[Int]) -> Int {
     // Machine integers when every entry fits (the usual case for the
     // characteristic polynomial of decimal scenes).
-    if let Some(small) = c.iter().map(|x| x.to_i128()).collect::<Option<Vec<i128>>>() {
-        let g = small
-            .iter()
-            .try_fold(0u128, |g, &x| {
-                let g = gcd_u128(g, x.unsigned_abs());
-                if g == 1 {
-                    Err(1)
-                } else {
-                    Ok(g)
-                }
-            })
-            .unwrap_or_else(|one| one);
+    let mut g = Some(0u128);
+    for x in c {
+        g = g
+            .zip(x.to_i128())
+            .map(|(g, v)| gcd_u128(g, v.unsigned_abs()));
+        if g.is_none_or(|g| g == 1) {
+            break;
+        }
+    }
+    if let Some(g) = g {
         return Int::from_i128(g as i128);
     }
     // Start from the smallest coefficient (the gcd divides it), and reduce
@@ -413,7 +415,9 @@ impl ZPoly {
         // The shift adds at most n bits (the entries are sums of at most
         // 2^n coefficients): machine integers when that fits in i128.
         if self.max_bits() as usize + self.c.len() < 126 {
-            let mut v: Vec<i128> = self.c.iter().rev().filter_map(Int::to_i128).collect();
+            let mut v: Vec<i128> = (self.c.iter().rev())
+                .map(|c| c.to_i128().expect("fits: guarded by max_bits"))
+                .collect();
             let n = v.len();
             for i in 0..n {
                 for j in (i..n - 1).rev() {

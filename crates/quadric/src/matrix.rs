@@ -36,9 +36,15 @@ pub fn congruence<R: RingOps>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
 
 /// The 2×2 minor of rows `r, r+1` and columns `i, j`.
 fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
-    m[r][i]
-        .times(&m[r + 1][j])
-        .minus(&m[r][j].times(&m[r + 1][i]))
+    mixed_minor2(m, m, r, i, j)
+}
+
+/// `x[r][i]·y[r+1][j] − x[r][j]·y[r+1][i]`: the 2×2 minor with its top row
+/// from `x` and its bottom row from `y`.
+fn mixed_minor2<R: RingOps>(x: &Mat4<R>, y: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
+    x[r][i]
+        .times(&y[r + 1][j])
+        .minus(&x[r][j].times(&y[r + 1][i]))
 }
 
 /// `m` times the lcm of its entries' denominators: the same quadric (a
@@ -137,11 +143,7 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     // The 2×2 minor of rows (r, r + 1), columns (i, j) of λA + B as
     // [λ², λ, 1] coefficients.
     let minor = |r: usize, i: usize, j: usize| -> [R; 3] {
-        let cross = |x: &Mat4<R>, y: &Mat4<R>| {
-            x[r][i]
-                .times(&y[r + 1][j])
-                .minus(&x[r][j].times(&y[r + 1][i]))
-        };
+        let cross = |x: &Mat4<R>, y: &Mat4<R>| mixed_minor2(x, y, r, i, j);
         [cross(a, a), cross(a, b).plus(&cross(b, a)), cross(b, b)]
     };
     let mut f: [R; 5] = std::array::from_fn(|_| R::zero());
@@ -245,23 +247,15 @@ pub fn placed_characteristic<R: RingOps>(
             *slot = c;
         }
         // Laplace along rows (0, 1): positions (p, q) of the top minor in T,
-        // the complementary positions for the bottom one, sign
-        // (−1)^(p + q + 1).
+        // the complementary positions (r, s) for the bottom one.
         let mut plucker = R::zero();
-        for (p, q, r, s) in [
-            (0, 1, 2, 3),
-            (0, 2, 1, 3),
-            (0, 3, 1, 2),
-            (1, 2, 0, 3),
-            (1, 3, 0, 2),
-            (2, 3, 0, 1),
-        ] {
+        for ((p, q), (r, s), positive) in LAPLACE_PAIRS {
             let (upper, lower) = (&top[cols[p]][cols[q]], &bottom[cols[r]][cols[s]]);
             if upper.is_zero() || lower.is_zero() {
                 continue;
             }
             let term = upper.times(lower);
-            plucker = if (p + q) % 2 == 1 {
+            plucker = if positive {
                 plucker.plus(&term)
             } else {
                 plucker.minus(&term)

@@ -37,11 +37,10 @@ const TINY: f64 = f64::from_bits(4);
 #[derive(Clone, Debug)]
 pub(crate) struct FloatBernstein {
     coeffs: Vec<f64>,
-    /// `errs[i] ≥ |coeffs[i] − exact_i|`.
+    /// `errs[i] ≥ |coeffs[i] − exact_i|` (`0.0 ± 0` marks a coefficient
+    /// known to be exactly zero, e.g. at an end that is an exact root; de
+    /// Casteljau copies the end coefficients, so the mark survives splits).
     errs: Vec<f64>,
-    /// The first (last) coefficient is known to be exactly zero: the node's
-    /// end is an exact root of the polynomial.
-    zero_ends: [bool; 2],
 }
 
 impl FloatBernstein {
@@ -61,11 +60,7 @@ impl FloatBernstein {
                 }
             })
             .collect();
-        FloatBernstein {
-            coeffs,
-            errs,
-            zero_ends: [false; 2],
-        }
+        FloatBernstein { coeffs, errs }
     }
 
     /// Encloses `sign · coeffs` scaled by a common power of two.
@@ -96,12 +91,11 @@ impl FloatBernstein {
     /// (so the reversals keep the degree); `None` if a sign is undecided.
     pub(crate) fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<FloatBernstein> {
         let n = p.degree()?;
-        let q = if lo.is_zero() && *hi == Rat::one() {
-            p.clone()
+        let c = if lo.is_zero() && *hi == Rat::one() {
+            p.scaled_bernstein()
         } else {
-            p.compose_affine(lo, &(hi - lo))
+            p.compose_affine(lo, &(hi - lo)).scaled_bernstein()
         };
-        let c = q.scaled_bernstein();
         // The ends are p(lo), p(hi) (times positive factors).
         if c[0].is_zero() || c[n].is_zero() {
             return None;
@@ -121,10 +115,6 @@ impl FloatBernstein {
 
     /// The certified sign of coefficient `i` (`None` if undecided).
     pub(crate) fn sign(&self, i: usize) -> Option<i32> {
-        let last = self.coeffs.len() - 1;
-        if (i == 0 && self.zero_ends[0]) || (i == last && self.zero_ends[1]) {
-            return Some(0);
-        }
         let (b, e) = (self.coeffs[i], self.errs[i]);
         if b > e {
             Some(1)
@@ -152,7 +142,6 @@ impl FloatBernstein {
         let i = if at_hi { self.coeffs.len() - 1 } else { 0 };
         self.coeffs[i] = 0.0;
         self.errs[i] = 0.0;
-        self.zero_ends[at_hi as usize] = true;
     }
 
     /// De Casteljau at `1/2`: the coefficients over the two halves, with the
@@ -190,15 +179,8 @@ impl FloatBernstein {
             right.0[n - k] = b[len - 1];
             right.1[n - k] = e[len - 1];
         }
-        let child = |(coeffs, errs), zero_ends| FloatBernstein {
-            coeffs,
-            errs,
-            zero_ends,
-        };
-        (
-            child(left, [self.zero_ends[0], false]),
-            child(right, [false, self.zero_ends[1]]),
-        )
+        let child = |(coeffs, errs)| FloatBernstein { coeffs, errs };
+        (child(left), child(right))
     }
 }
 

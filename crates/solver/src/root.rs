@@ -92,6 +92,17 @@ pub trait SignModel {
     fn approx_value_and_slope(&self, x: f64) -> (f64, f64);
     /// The exact sign of `q(x)`.
     fn sign_at(&self, x: &Rat) -> i32;
+    /// The sign of `q(x)` when the enclosure at `x` excludes zero.
+    fn float_sign_at(&self, x: &Rat) -> Option<i32> {
+        self.enclose(Interval::from_rat(x))
+            .sign()
+            .filter(|s| *s != 0)
+    }
+    /// The exact sign of `q(x)`: [`SignModel::float_sign_at`] when it
+    /// decides, [`SignModel::sign_at`] otherwise.
+    fn filtered_sign_at(&self, x: &Rat) -> i32 {
+        self.float_sign_at(x).unwrap_or_else(|| self.sign_at(x))
+    }
     /// `false` only if `q(x) ≠ 0` is certain from a cheap test (the
     /// rational root theorem); `true` is always a safe answer.
     fn admits_root_at(&self, _x: &Rat) -> bool {
@@ -263,25 +274,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
     }
 
-    /// The sign of `p(x)` when the `f64` enclosure proves it.
-    fn float_sign_of_p_at(&self, x: &Rat) -> Option<i32> {
-        self.base
-            .enclose(Interval::from_rat(x))
-            .sign()
-            .filter(|s| *s != 0)
-    }
-
-    /// The sign of `p(x)`: the interval enclosure when it excludes zero,
-    /// exact evaluation otherwise.
-    fn sign_of_p_at(&self, x: &Rat) -> i32 {
-        self.float_sign_of_p_at(x)
-            .unwrap_or_else(|| self.base.sign_at(x))
-    }
     /// Halves the enclosure (one sign evaluation).
     pub fn bisect(&mut self) {
         if self.sign_lo != 0 {
             let m = self.midpoint();
-            let s = self.sign_of_p_at(&m);
+            let s = self.base.filtered_sign_at(&m);
             self.cut(m, s);
         }
     }
@@ -326,7 +323,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         if self.cut_both(
             Rat::dyadic_in(&a0, &a1),
             Rat::dyadic_in(&b0, &b1),
-            RealRoot::<M>::float_sign_of_p_at,
+            |root: &RealRoot<M>, x: &Rat| root.base.float_sign_at(x),
         ) {
             Jump::Progress
         } else if 8.0 * eps >= hi_f - lo_f {
@@ -444,6 +441,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let mut float_wait = 0u32;
         // Bisections left before the next exact Newton attempt.
         let mut wait = 0u32;
+        // Exact Newton once the enclosure is narrow enough for its
+        // quadratic regime to be likely (`2^(−10)` of the span).
+        let narrow = Rat::dyadic(Int::one(), 10);
         while self.sign_lo != 0 && self.width() > *max_width {
             if float_newton && float_wait == 0 {
                 match self.newton_jump(max_width) {
@@ -453,9 +453,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 }
             }
             float_wait = float_wait.saturating_sub(1);
-            // Exact Newton once the enclosure is narrow enough for its
-            // quadratic regime to be likely (`2^(−10)` of the span).
-            if wait == 0 && self.width() <= Rat::dyadic(Int::one(), 10) {
+            if wait == 0 && self.width() <= narrow {
                 if self.exact_newton_jump(max_width) {
                     continue;
                 }
