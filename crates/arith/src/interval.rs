@@ -119,6 +119,10 @@ impl Interval {
     pub fn width(&self) -> f64 {
         (self.hi - self.lo).next_up()
     }
+    /// Both ends finite (no overflow, no NaN turned into the whole line).
+    pub fn is_finite(&self) -> bool {
+        self.lo.is_finite() && self.hi.is_finite()
+    }
     /// `0 ∈ self`.
     pub fn contains_zero(&self) -> bool {
         self.lo <= 0.0 && self.hi >= 0.0

@@ -157,7 +157,16 @@ impl Bernstein {
     /// docs): the sign of `scale` moves into the coefficients, and their
     /// common power of two and content into `scale`. Panics unless
     /// `lo < hi` and `coeffs` is nonempty.
-    pub fn from_parts(lo: Rat, hi: Rat, scale: Rat, mut coeffs: Vec<Int>) -> Bernstein {
+    pub fn from_parts(lo: Rat, hi: Rat, scale: Rat, coeffs: Vec<Int>) -> Bernstein {
+        Bernstein::normalised(lo, hi, scale, coeffs, true)
+    }
+
+    /// [`Bernstein::from_parts`], with the odd part of the content removed
+    /// only when `content` is set. A de Casteljau child of a normalised
+    /// polynomial gains powers of two (the halvings) and almost never an odd
+    /// common factor, and the gcd that would find one costs far more than
+    /// the split itself once the coefficients have thousands of bits.
+    fn normalised(lo: Rat, hi: Rat, scale: Rat, mut coeffs: Vec<Int>, content: bool) -> Bernstein {
         assert!(lo < hi, "Bernstein: empty interval");
         assert!(!coeffs.is_empty(), "Bernstein: no coefficients");
         let mut scale = scale;
@@ -186,7 +195,11 @@ impl Bernstein {
             coeffs.iter_mut().for_each(|c| *c = c.shr_floor(tz));
             scale = scale.mul_pow2(tz as i64);
         }
-        let g = crate::zpoly::content_of(&coeffs);
+        let g = if content {
+            crate::zpoly::content_of(&coeffs)
+        } else {
+            Int::one()
+        };
         if !g.is_one() {
             coeffs.iter_mut().for_each(|c| *c = c.div_exact(&g));
             scale = &scale * &Rat::from_int(g);
@@ -325,8 +338,8 @@ impl Bernstein {
         let child_scale = &self.scale / &qn;
         let m = &self.lo + &(&(&self.hi - &self.lo) * r);
         (
-            Bernstein::from_parts(self.lo.clone(), m.clone(), child_scale.clone(), left),
-            Bernstein::from_parts(m, self.hi.clone(), child_scale, right),
+            Bernstein::normalised(self.lo.clone(), m.clone(), child_scale.clone(), left, false),
+            Bernstein::normalised(m, self.hi.clone(), child_scale, right, false),
         )
     }
     /// [`Bernstein::split`] at `r = 1/2`.

@@ -5,7 +5,7 @@
 
 use crate::scaled::ScaledPoly;
 use ccd_arith::{Int, Interval, Rat};
-use ccd_poly::ZPoly;
+use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
@@ -189,6 +189,10 @@ impl SignModel for SignProbe {
         &self.q
     }
 }
+
+/// The round of [`RealRoot::sign_with`] from which, once `q(α) ≠ 0` is
+/// proven, the exact Bernstein test on `q` runs besides the enclosures.
+const EXACT_SIGN_ROUND: u32 = 3;
 
 /// What a float Newton jump achieved.
 enum Jump {
@@ -476,6 +480,31 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
     }
 
+    /// The sign of `q` over the enclosure `I` from the Taylor form at the
+    /// dyadic `m ∈ I`: `q(x) = q(m) + q′(m)·(x − m) + q″(ξ)·(x − m)²/2`.
+    /// The linear part is exact at both ends of `I` (it is monotone, so
+    /// its extremes are there), and the remainder is bounded by
+    /// `sup|q″(I)|·r²/2` with `r = max |x − m|`, the only rounded quantity
+    /// (`second`, an outward enclosure: valid through underflow).
+    fn exact_taylor_sign(&self, m: &Rat, jet: &ExactJet, second: Interval) -> Option<i32> {
+        let bound = second.lo.abs().max(second.hi.abs());
+        let bound = Rat::from_f64_exact(bound)?;
+        let value = Rat::from_int(jet.value.clone()).mul_pow2(-jet.value_exp);
+        let slope = Rat::from_int(jet.slope.clone()).mul_pow2(-jet.slope_exp);
+        let (dl, dh) = (&self.lo - m, &self.hi - m);
+        let (l, h) = (&value + &(&slope * &dl), &value + &(&slope * &dh));
+        let r = dl.abs().max(dh.abs());
+        let remainder = &(&bound * &(&r * &r)) * &Rat::from_frac(1, 2);
+        let (low, high) = if l <= h { (l, h) } else { (h, l) };
+        if (&low - &remainder).signum() > 0 {
+            Some(1)
+        } else if (&high + &remainder).signum() < 0 {
+            Some(-1)
+        } else {
+            None
+        }
+    }
+
     fn enclosure(&self) -> Interval {
         Interval::from_rat(&self.lo).hull(&Interval::from_rat(&self.hi))
     }
@@ -506,8 +535,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// step proven by exact signs of `p`).
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
-        let mut zero_checked = false;
-        for round in 0.. {
+        // `Some(q)` once `q(α) ≠ 0` is proven (q formed for the gcd test).
+        let mut nonzero: Option<&ZPoly> = None;
+        for round in 0u32.. {
             if self.sign_lo == 0 {
                 return model.sign_at(&self.lo);
             }
@@ -516,22 +546,38 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 return s;
             }
             let m = Rat::dyadic_in(&self.lo, &self.hi);
-            let (qm, dqm) = model.value_and_slope_at(&m);
+            let jet = model.exact_jet_at(&m);
+            let (qm, dqm) = jet.enclose();
             // I − m exactly, then enclosed: an f64 interval around α itself
             // could not be narrower than an ulp of α.
             let offset =
                 Interval::from_rat(&(&self.lo - &m)).hull(&Interval::from_rat(&(&self.hi - &m)));
             let half = Interval::point(0.5);
-            if let Some(s) =
-                decided(qm + dqm * offset + model.enclose_second(whole) * offset.square() * half)
-            {
+            let second = model.enclose_second(whole);
+            if let Some(s) = decided(qm + dqm * offset + second * offset.square() * half) {
                 return s;
             }
-            if !zero_checked && (round >= 1 || qm.contains_zero()) {
-                zero_checked = true;
-                let g = self.base.exact().gcd(model.exact());
+            // The same Taylor form with its linear part kept exact: no
+            // underflow however small `q(α)` is beside `q`'s coefficients.
+            if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
+                return s;
+            }
+            if nonzero.is_none() && (round >= 1 || qm.contains_zero()) {
+                let q = model.exact();
+                let g = self.base.exact().gcd(q);
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
                     return 0;
+                }
+                nonzero = Some(q);
+            }
+            // `q(α) ≠ 0` is proven, and the floating-point parts have had
+            // their rounds: Descartes' rule on `q`'s exact Bernstein
+            // coefficients over `I` decides as soon as `I` is free of
+            // `q`'s roots (an exact test; see docs/termination.md).
+            if let Some(q) = nonzero.filter(|_| round >= EXACT_SIGN_ROUND || !second.is_finite()) {
+                let b = Bernstein::from_power(q, &self.lo, &self.hi);
+                if b.sign_variations() == 0 && b.sign_at_lo() != 0 {
+                    return b.sign_at_lo();
                 }
             }
             let w = self.width().mul_pow2(-16);
