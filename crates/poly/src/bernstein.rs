@@ -233,7 +233,8 @@ impl Bernstein {
         let kappa = &Rat::from_int(big_p.leading().expect("degree kept").clone()) / &lc_exact;
         let c = reverse_shift_reverse(big_p.into_coeffs(), 1);
         let (beta, f) = divide_binomials(c);
-        Bernstein::from_parts(lo.clone(), hi.clone(), &f / &kappa, beta)
+        // `big_p` is primitive already: no second content gcd.
+        Bernstein::normalised(lo.clone(), hi.clone(), &f / &kappa, beta, false)
     }
     /// The Bernstein form of a rational polynomial: that of its primitive
     /// part, times its scale.

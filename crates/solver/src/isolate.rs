@@ -23,7 +23,7 @@
 
 use crate::float_bernstein::FloatBernstein;
 use crate::root::{RealRoot, SignModel, SignProbe};
-use ccd_arith::{Interval, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
@@ -41,7 +41,38 @@ struct Node {
     hi: Rat,
     depth: u32,
     coeffs: Coeffs,
+    cluster: Cluster,
 }
+
+/// What a node's ancestry says about a root cluster (see
+/// [`RootIter::zoom`]): the sign variations of its parent, for how many
+/// generations they have not dropped, and the zoom factor `2^speed` for the
+/// next Newton step.
+#[derive(Clone, Copy, Debug)]
+struct Cluster {
+    var: usize,
+    streak: u32,
+    speed: u32,
+}
+
+impl Default for Cluster {
+    fn default() -> Cluster {
+        Cluster {
+            var: 0,
+            streak: 0,
+            speed: MIN_SPEED,
+        }
+    }
+}
+
+/// Generations with unchanged sign variations (≥ 2) before a Newton zoom
+/// is tried: the roots then sit in a cluster 2⁻⁸ of the node's width or
+/// smaller, where bisection would spend one level per bit.
+const ZOOM_STREAK: u32 = 8;
+/// The smallest zoom, `2^2`; a zoom that holds squares the factor
+/// (`speed` doubles) up to `2^MAX_SPEED`, one that fails halves it.
+const MIN_SPEED: u32 = 2;
+const MAX_SPEED: u32 = 1 << 15;
 
 // A node holds its coefficient vectors behind pointers already; the stack
 // is short (one path of the subdivision tree), so its size does not matter.
@@ -74,24 +105,27 @@ impl Node {
             hi,
             depth,
             coeffs: Coeffs::Exact(b),
+            cluster: Cluster::default(),
         }
     }
 
     /// Prefers the float form of exact coefficients whenever the filter can
-    /// sign every coefficient.
-    fn from_exact_bernstein(b: Bernstein, depth: u32) -> Node {
+    /// sign every coefficient (and `float` allows it).
+    fn from_exact_bernstein(b: Bernstein, depth: u32, float: bool) -> Node {
         let (lo, hi) = (b.lo().clone(), b.hi().clone());
-        let f = FloatBernstein::from_exact(b.coeffs(), b.scale().signum());
-        let coeffs = if f.signs().is_some() {
-            Coeffs::Float(f)
-        } else {
-            Coeffs::Exact(b)
+        let f = float
+            .then(|| FloatBernstein::from_exact(b.coeffs(), b.scale().signum()))
+            .filter(|f| f.signs().is_some());
+        let coeffs = match f {
+            Some(f) => Coeffs::Float(f),
+            None => Coeffs::Exact(b),
         };
         Node {
             lo,
             hi,
             depth,
             coeffs,
+            cluster: Cluster::default(),
         }
     }
 
@@ -106,8 +140,9 @@ impl Node {
     }
 
     /// Halves the node; returns the children and the sign of `p` at the
-    /// split point when the coefficients prove it.
-    fn split(self) -> (Node, Node, Option<i32>) {
+    /// split point when the coefficients prove it. The children of an exact
+    /// node go back to the float form only if `float`.
+    fn split(self, float: bool) -> (Node, Node, Option<i32>) {
         let mid = Rat::midpoint(&self.lo, &self.hi);
         let depth = self.depth + 1;
         match self.coeffs {
@@ -119,23 +154,26 @@ impl Node {
                     hi: mid.clone(),
                     depth,
                     coeffs: Coeffs::Float(l),
+                    cluster: self.cluster,
                 };
                 let right = Node {
                     lo: mid,
                     hi: self.hi,
                     depth,
                     coeffs: Coeffs::Float(r),
+                    cluster: self.cluster,
                 };
                 (left, right, s)
             }
             Coeffs::Exact(b) => {
                 let (l, r) = b.split_half();
                 let s = l.sign_at_hi();
-                (
-                    Node::from_exact_bernstein(l, depth),
-                    Node::from_exact_bernstein(r, depth),
-                    Some(s),
-                )
+                let (mut left, mut right) = (
+                    Node::from_exact_bernstein(l, depth, float),
+                    Node::from_exact_bernstein(r, depth, float),
+                );
+                (left.cluster, right.cluster) = (self.cluster, self.cluster);
+                (left, right, Some(s))
             }
         }
     }
@@ -160,7 +198,15 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     undecided: bool,
     /// Splits of nodes with unsigned coefficients left (filter only).
     budget: usize,
+    /// Float nodes that had to be redone exactly, each by a conversion from
+    /// the power basis; past [`FLOAT_FAILURES`] the filter does not pay on
+    /// this polynomial (coefficients beyond `f64`'s range, say) and the
+    /// children of exact nodes stay exact.
+    float_failures: u32,
 }
+
+/// See [`RootIter::float_failures`].
+const FLOAT_FAILURES: u32 = 8;
 
 impl RootIter<Arc<SignProbe>> {
     /// `p` must be squarefree, nonzero and of degree >= 1; `lo < hi`.
@@ -182,8 +228,9 @@ impl RootIter<Arc<SignProbe>> {
                 hi: hi.clone(),
                 depth: 0,
                 coeffs: Coeffs::Float(f),
+                cluster: Cluster::default(),
             },
-            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi), 0),
+            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi), 0, true),
         };
         stack.push(Item::Node(root));
         if first == 0 {
@@ -195,6 +242,7 @@ impl RootIter<Arc<SignProbe>> {
             filter_only: false,
             undecided: false,
             budget: 0,
+            float_failures: 0,
         }
     }
 }
@@ -219,6 +267,7 @@ impl<M: SignModel + Clone> RootIter<M> {
                 hi: hi.clone(),
                 depth: 0,
                 coeffs: Coeffs::Float(f),
+                cluster: Cluster::default(),
             })]
         };
         RootIter {
@@ -227,6 +276,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             filter_only: true,
             undecided,
             budget: 2 * coeffs.len() + 16,
+            float_failures: 0,
         }
     }
 
@@ -240,7 +290,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// point itself when it is a root.
     fn split_and_push(&mut self, node: Node) {
         let mid = Rat::midpoint(&node.lo, &node.hi);
-        let (mut left, mut right, mid_sign) = node.split();
+        let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
         let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
         if mid_sign == 0 {
             right.set_endpoint_zero(false);
@@ -252,6 +302,91 @@ impl<M: SignModel + Clone> RootIter<M> {
                 .push(Item::Root(RealRoot::exact(self.base.clone(), mid)));
         }
         self.stack.push(Item::Node(left));
+    }
+
+    /// A Newton zoom into a root cluster (the Newton test of Sagraloff and
+    /// Mehlhorn's ANewDsc): for a node `I` of width `w` whose `k ≥ 2` sign
+    /// variations have not dropped for [`ZOOM_STREAK`] generations, the
+    /// estimate `λ = m − k·p(m)/p′(m)` at the midpoint `m` (Newton's step
+    /// for a `k`-fold root; exact values) picks the subinterval `I′` of
+    /// width `w/N`, `N = 2^speed`, on the grid of `w/(4N)` around `λ`. If
+    /// Descartes' rule proves the rest of `I` root-free (no sign variation
+    /// in the exact Bernstein coefficients on either side, nonzero at the
+    /// cuts), `I′` replaces `I` and the next zoom is `N²`; otherwise `I` is
+    /// returned for bisection and the next zoom is `√N`. A cluster of
+    /// width `δ` then takes about `log log(w/δ)` zooms instead of
+    /// `log(w/δ)` bisections. Every step is exact, so the roots kept are
+    /// exactly those of `I`; and since a failed zoom falls back to a
+    /// bisection and a successful one shrinks `I` at least fourfold, the
+    /// isolation still terminates.
+    fn zoom(&mut self, node: Node, k: usize) -> Result<Node, Node> {
+        let speed = node.cluster.speed;
+        let slower = |mut node: Node| {
+            node.cluster.speed = (speed / 2).max(MIN_SPEED);
+            node.cluster.streak = 0;
+            node
+        };
+        let b = match &node.coeffs {
+            Coeffs::Exact(b) => b.clone(),
+            Coeffs::Float(_) => Bernstein::from_power(self.base.exact(), &node.lo, &node.hi),
+        };
+        // Widths are powers of two here (halvings and zooms of [lo, hi] by
+        // powers of two); anything else is left to bisection.
+        let w = &node.hi - &node.lo;
+        let Some(e) = w.dyadic_exponent().filter(|_| w.numer().is_one()) else {
+            return Err(slower(node));
+        };
+        let m = Rat::midpoint(&node.lo, &node.hi);
+        let jet = self.base.exact_jet_at(&m);
+        if jet.slope.is_zero() {
+            return Err(slower(node));
+        }
+        // (λ − lo)/h = 2N − k·p(m)/p′(m)·4N/w with p(m) = V·2^(−v) and
+        // p′(m) = S·2^(−s): one floor division of integers.
+        let total = Int::one().shl(speed as u64 + 2);
+        let shift = jet.slope_exp - jet.value_exp + e as i64 + speed as i64 + 2;
+        let kv = &jet.value * &Int::from(k as i64);
+        let (num, den) = if shift >= 0 {
+            (kv.shl(shift as u64), jet.slope.clone())
+        } else {
+            (kv, jet.slope.shl(shift.unsigned_abs()))
+        };
+        let estimate = &total.shr_floor(1) - &num.div_floor(&den);
+        let four = Int::from(4);
+        let max_i = &total - &four;
+        let mut i = estimate - Int::from(2);
+        if i.signum() < 0 {
+            i = Int::zero();
+        }
+        if i > max_i {
+            i = max_i.clone();
+        }
+        // Both cuts are dyadic splits of I's own coefficients; I′ itself
+        // comes from the power basis (a split of a split would cut at a
+        // non-dyadic ratio, with a rational scale to reduce).
+        let cut = |j: &Int| Rat::new(j.clone(), total.clone()).expect("nonzero");
+        let end = &i + &four;
+        if !i.is_zero() {
+            let (left, _) = b.split(&cut(&i));
+            if left.sign_variations() != 0 || left.sign_at_hi() == 0 {
+                return Err(slower(node));
+            }
+        }
+        if end != total {
+            let (_, right) = b.split(&cut(&end));
+            if right.sign_variations() != 0 || right.sign_at_lo() == 0 {
+                return Err(slower(node));
+            }
+        }
+        let at = |j: &Int| &node.lo + &(&w * &cut(j));
+        let middle = Bernstein::from_power(self.base.exact(), &at(&i), &at(&end));
+        let mut zoomed = Node::from_exact_bernstein(middle, node.depth + 1, false);
+        zoomed.cluster = Cluster {
+            var: k,
+            streak: ZOOM_STREAK,
+            speed: (speed * 2).min(MAX_SPEED),
+        };
+        Ok(zoomed)
     }
 
     /// Ends a filter-only isolation as undecided.
@@ -286,6 +421,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                 None => {
                     // The filter cannot sign a coefficient: redo this node
                     // exactly.
+                    self.float_failures += 1;
                     self.stack.push(Item::Node(Node::exact(
                         self.base.exact(),
                         node.lo,
@@ -310,6 +446,22 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             }
             if self.filter_only && node.depth >= FILTER_DEPTH {
                 return self.give_up();
+            }
+            let mut node = node;
+            node.cluster.streak = if var == node.cluster.var {
+                node.cluster.streak + 1
+            } else {
+                0
+            };
+            node.cluster.var = var;
+            if !self.filter_only && var >= 2 && node.cluster.streak >= ZOOM_STREAK {
+                node = match self.zoom(node, var) {
+                    Ok(zoomed) => {
+                        self.stack.push(Item::Node(zoomed));
+                        continue;
+                    }
+                    Err(node) => node,
+                };
             }
             self.split_and_push(node);
         }

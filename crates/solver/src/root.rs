@@ -580,7 +580,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
                     return b.sign_at_lo();
                 }
             }
-            let w = self.width().mul_pow2(-16);
+            // 16 bits a round while the floating-point forms may still
+            // decide; then twice as many each round (exact Newton steps
+            // double the bits anyway), so the rounds needed grow with the
+            // logarithm of the bits that `q(α) ≠ 0` takes to show.
+            let gain = 16i64 << round.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
+            let w = self.width().mul_pow2(-gain);
             self.refine_to(&w);
         }
         unreachable!("the loop returns")

@@ -178,3 +178,38 @@ proptest! {
         prop_assert!(first.lo() <= &m && &m <= first.hi());
     }
 }
+
+/// `2^(−k)`.
+fn pow2(k: u64) -> Rat {
+    Rat::dyadic(Int::one(), k)
+}
+
+/// Root clusters far below bisection's reach (the Newton zoom): two real
+/// roots `2^(−3000)` apart next to a third, and a complex pair
+/// `a ± 2^(−2000)·i` that no real root explains. Every real root is found
+/// once, in order, in its own enclosure, and the pair yields none.
+#[test]
+fn clusters_far_below_bisection_depth() {
+    let a = Rat::from_frac(1, 3);
+    let d = pow2(3000);
+    let roots = [a.clone(), &a + &d, Rat::from_frac(5, 7)];
+    let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
+    let found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 3);
+    for (f, r) in found.iter().zip(&roots) {
+        assert!(f.lo() <= r && r <= f.hi(), "{r} not in {f:?}");
+    }
+    assert!(found[0].hi() <= found[1].lo());
+    // (t − a)² + ε² with a = 2/5, ε = 2^(−2000), times (t − 3/4):
+    // den(a)²·((t − a)² + ε²) = (5t − 2)² + 25ε², cleared of 2^4000.
+    let scale = Int::one().shl(4000);
+    let pair = ZPoly::new(vec![
+        Int::from(4) * &scale + Int::from(25),
+        Int::from(-20) * &scale,
+        Int::from(25) * &scale,
+    ]);
+    let p = &pair * &linear(&Rat::from_frac(3, 4));
+    let found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi());
+}
