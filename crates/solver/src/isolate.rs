@@ -319,27 +319,27 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// exactly those of `I`; and since a failed zoom falls back to a
     /// bisection and a successful one shrinks `I` at least fourfold, the
     /// isolation still terminates.
-    fn zoom(&mut self, node: Node, k: usize) -> Result<Node, Node> {
+    fn zoom(&self, node: &mut Node, k: usize) -> Option<Node> {
         let speed = node.cluster.speed;
-        let slower = |mut node: Node| {
-            node.cluster.speed = (speed / 2).max(MIN_SPEED);
-            node.cluster.streak = 0;
-            node
-        };
+        // A failed zoom: slower next time, and not before another streak.
+        node.cluster.speed = (speed / 2).max(MIN_SPEED);
+        node.cluster.streak = 0;
+        let converted;
         let b = match &node.coeffs {
-            Coeffs::Exact(b) => b.clone(),
-            Coeffs::Float(_) => Bernstein::from_power(self.base.exact(), &node.lo, &node.hi),
+            Coeffs::Exact(b) => b,
+            Coeffs::Float(_) => {
+                converted = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
+                &converted
+            }
         };
         // Widths are powers of two here (halvings and zooms of [lo, hi] by
         // powers of two); anything else is left to bisection.
         let w = &node.hi - &node.lo;
-        let Some(e) = w.dyadic_exponent().filter(|_| w.numer().is_one()) else {
-            return Err(slower(node));
-        };
+        let e = w.dyadic_exponent().filter(|_| w.numer().is_one())?;
         let m = Rat::midpoint(&node.lo, &node.hi);
         let jet = self.base.exact_jet_at(&m);
         if jet.slope.is_zero() {
-            return Err(slower(node));
+            return None;
         }
         // (λ − lo)/h = 2N − k·p(m)/p′(m)·4N/w with p(m) = V·2^(−v) and
         // p′(m) = S·2^(−s): one floor division of integers.
@@ -369,13 +369,13 @@ impl<M: SignModel + Clone> RootIter<M> {
         if !i.is_zero() {
             let (left, _) = b.split(&cut(&i));
             if left.sign_variations() != 0 || left.sign_at_hi() == 0 {
-                return Err(slower(node));
+                return None;
             }
         }
         if end != total {
             let (_, right) = b.split(&cut(&end));
             if right.sign_variations() != 0 || right.sign_at_lo() == 0 {
-                return Err(slower(node));
+                return None;
             }
         }
         let at = |j: &Int| &node.lo + &(&w * &cut(j));
@@ -386,7 +386,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             streak: ZOOM_STREAK,
             speed: (speed * 2).min(MAX_SPEED),
         };
-        Ok(zoomed)
+        Some(zoomed)
     }
 
     /// Ends a filter-only isolation as undecided.
@@ -455,13 +455,10 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             };
             node.cluster.var = var;
             if !self.filter_only && var >= 2 && node.cluster.streak >= ZOOM_STREAK {
-                node = match self.zoom(node, var) {
-                    Ok(zoomed) => {
-                        self.stack.push(Item::Node(zoomed));
-                        continue;
-                    }
-                    Err(node) => node,
-                };
+                if let Some(zoomed) = self.zoom(&mut node, var) {
+                    self.stack.push(Item::Node(zoomed));
+                    continue;
+                }
             }
             self.split_and_push(node);
         }
