@@ -160,7 +160,7 @@ fn contacts_at<M: SignModel + Clone>(
     width: &Rat,
     opts: &Options,
     stats: &mut Stats,
-) -> Option<Vec<Instant>> {
+) -> Result<Option<Vec<Instant>>, CcdError> {
     let mut contacts = vec![];
     for mut root in roots.by_ref() {
         stats.candidates += 1;
@@ -172,11 +172,17 @@ fn contacts_at<M: SignModel + Clone>(
                 certified: true,
             });
             if opts.first_contact_only {
-                return Some(contacts);
+                return Ok(Some(contacts));
             }
         }
     }
-    (!roots.undecided()).then_some(contacts)
+    if roots.exhausted() {
+        return Err(CcdError::Effort {
+            work: roots.work(),
+            limit: ccd_solver::MAX_EXACT_WORK,
+        });
+    }
+    Ok((!roots.undecided()).then_some(contacts))
 }
 
 /// Algorithm 1's `sr0` branch without forming `sr0`: its roots from its
@@ -191,10 +197,10 @@ fn filtered_contacts(
     width: &Rat,
     opts: &Options,
     stats: &Stats,
-) -> Option<(Vec<Instant>, Stats)> {
+) -> Result<Option<(Vec<Instant>, Stats)>, CcdError> {
     let sr0 = coefficients.model(Quantity::Sr0);
     if sr0.filtered_sign_at(&Rat::from_frac(1, 2)) == 0 {
-        return None;
+        return Ok(None);
     }
     let deg_sr0 = coefficients.sr0_degree();
     let mut stats = Stats {
@@ -213,7 +219,7 @@ fn filtered_contacts(
         opts,
         &mut stats,
     )?;
-    Some((contacts, stats))
+    Ok(contacts.map(|c| (c, stats)))
 }
 
 /// Runs Algorithm 1 on a rational scene.
@@ -256,7 +262,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    let contacts = match filtered_contacts(&f, &coefficients, &width, opts, &stats) {
+    let contacts = match filtered_contacts(&f, &coefficients, &width, opts, &stats)? {
         Some((contacts, filtered_stats)) => {
             stats = filtered_stats;
             Some(contacts)
@@ -276,7 +282,7 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
                     stats.deg_candidates = poly.degree();
                     let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
                         .map_err(|e| CcdError::Internal(e.to_string()))?;
-                    let exact = contacts_at(roots, &coefficients, zeros, &width, opts, &mut stats);
+                    let exact = contacts_at(roots, &coefficients, zeros, &width, opts, &mut stats)?;
                     Some(exact.expect("exact isolation decides every sign"))
                 }
             }

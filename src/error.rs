@@ -28,6 +28,21 @@ pub enum CcdError {
     /// The interval path for non-rational motions refused the scene.
     #[error(transparent)]
     Enclosure(#[from] ccd_enclosure::EnclosureError),
+    /// The exact isolation reached its documented bound on work (see
+    /// docs/termination.md): the scene's numbers are too long for its
+    /// degree to be answered in about a second. Every query below the
+    /// bound runs to the end.
+    #[error(
+        "the exact query needs more than its bound of {limit} word operations of exact \
+         root isolation (did {work}): the scene's numbers are too long for its degrees; \
+         see docs/termination.md"
+    )]
+    Effort {
+        /// Word operations done when the isolation stopped.
+        work: u64,
+        /// The bound, [`ccd_solver::MAX_EXACT_WORK`].
+        limit: u64,
+    },
     /// A broken invariant inside the engine (a bug: please report it).
     #[error("internal error: {0}")]
     Internal(String),

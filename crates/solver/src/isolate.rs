@@ -203,6 +203,37 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// this polynomial (coefficients beyond `f64`'s range, say) and the
     /// children of exact nodes stay exact.
     float_failures: u32,
+    /// Exact work done so far, in word operations ([`exact_work`]).
+    work: u64,
+    /// The isolation stopped at [`RootIter::max_work`] (see
+    /// [`RootIter::exhausted`]).
+    exhausted: bool,
+    max_work: u64,
+}
+
+/// The default bound on an isolation's exact work ([`exact_work`]), about
+/// a second of this machine's time with num-bigint (docs/termination.md).
+pub const MAX_EXACT_WORK: u64 = 4_000_000_000;
+
+/// The word operations of one exact Bernstein operation producing `b`
+/// (a de Casteljau split or a change of basis: `(n + 1)²` products of
+/// numbers as long as `b`'s longest coefficient by a factor of `factor`
+/// bits — 1 for a halving, the cut's numerator for another split, the
+/// new end's for a change of basis).
+fn exact_work(b: &Bernstein, factor: u64) -> u64 {
+    let n = b.degree() as u64 + 1;
+    let bits = b.coeffs().iter().map(Int::bits).max().unwrap_or(0);
+    n * n * (bits / 64 + 1) * (factor / 64 + 1)
+}
+
+/// The bits of the longer end of `b`'s interval (the factor of a change
+/// of basis to it, [`exact_work`]).
+fn end_bits(b: &Bernstein) -> u64 {
+    [b.lo(), b.hi()]
+        .iter()
+        .map(|r| r.numer().bits().max(r.denom().bits()))
+        .max()
+        .unwrap_or(0)
 }
 
 /// See [`RootIter::float_failures`].
@@ -243,6 +274,9 @@ impl RootIter<Arc<SignProbe>> {
             undecided: false,
             budget: 0,
             float_failures: 0,
+            work: 0,
+            exhausted: false,
+            max_work: MAX_EXACT_WORK,
         }
     }
 }
@@ -277,6 +311,9 @@ impl<M: SignModel + Clone> RootIter<M> {
             undecided,
             budget: 2 * coeffs.len() + 16,
             float_failures: 0,
+            work: 0,
+            exhausted: false,
+            max_work: MAX_EXACT_WORK,
         }
     }
 
@@ -286,11 +323,43 @@ impl<M: SignModel + Clone> RootIter<M> {
         self.undecided
     }
 
+    /// Whether the isolation stopped because its exact work reached the
+    /// bound ([`RootIter::with_max_work`]): the roots it yielded are proven,
+    /// but there may be more. Never the case below the bound: every other
+    /// isolation runs to the end.
+    pub fn exhausted(&self) -> bool {
+        self.exhausted
+    }
+
+    /// The exact work done so far (word operations, [`MAX_EXACT_WORK`]).
+    pub fn work(&self) -> u64 {
+        self.work
+    }
+
+    /// The same isolation with another bound on its exact work (word
+    /// operations; [`MAX_EXACT_WORK`] by default, `u64::MAX` for none).
+    pub fn with_max_work(mut self, max_work: u64) -> Self {
+        self.max_work = max_work;
+        self
+    }
+
+    /// Counts the exact work that produced `b`; `false` once past the bound.
+    fn charge(&mut self, b: &Bernstein, factor: u64) -> bool {
+        self.work = self.work.saturating_add(exact_work(b, factor));
+        self.work <= self.max_work
+    }
+
     /// Halves `node` and stacks the halves (left on top), with the split
     /// point itself when it is a root.
     fn split_and_push(&mut self, node: Node) {
         let mid = Rat::midpoint(&node.lo, &node.hi);
         let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
+        for child in [&left, &right] {
+            if let Coeffs::Exact(b) = &child.coeffs {
+                let within = self.charge(b, 1);
+                self.exhausted |= !within;
+            }
+        }
         let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
         if mid_sign == 0 {
             right.set_endpoint_zero(false);
@@ -319,7 +388,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// exactly those of `I`; and since a failed zoom falls back to a
     /// bisection and a successful one shrinks `I` at least fourfold, the
     /// isolation still terminates.
-    fn zoom(&self, node: &mut Node, k: usize) -> Option<Node> {
+    fn zoom(&mut self, node: &mut Node, k: usize) -> Option<Node> {
         let speed = node.cluster.speed;
         // A failed zoom: slower next time, and not before another streak.
         node.cluster.speed = (speed / 2).max(MIN_SPEED);
@@ -329,6 +398,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             Coeffs::Exact(b) => b,
             Coeffs::Float(_) => {
                 converted = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
+                self.exhausted |= !self.charge(&converted, end_bits(&converted));
                 &converted
             }
         };
@@ -368,18 +438,21 @@ impl<M: SignModel + Clone> RootIter<M> {
         let end = &i + &four;
         if !i.is_zero() {
             let (left, _) = b.split(&cut(&i));
+            self.exhausted |= !self.charge(&left, i.bits());
             if left.sign_variations() != 0 || left.sign_at_hi() == 0 {
                 return None;
             }
         }
         if end != total {
             let (_, right) = b.split(&cut(&end));
+            self.exhausted |= !self.charge(&right, end.bits());
             if right.sign_variations() != 0 || right.sign_at_lo() == 0 {
                 return None;
             }
         }
         let at = |j: &Int| &node.lo + &(&w * &cut(j));
         let middle = Bernstein::from_power(self.base.exact(), &at(&i), &at(&end));
+        self.exhausted |= !self.charge(&middle, end_bits(&middle));
         let mut zoomed = Node::from_exact_bernstein(middle, node.depth + 1, false);
         zoomed.cluster = Cluster {
             var: k,
@@ -402,6 +475,10 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 
     fn next(&mut self) -> Option<RealRoot<M>> {
         while let Some(item) = self.stack.pop() {
+            if self.exhausted {
+                self.stack.clear();
+                return None;
+            }
             let node = match item {
                 Item::Root(r) => return Some(r),
                 Item::Node(n) => n,
@@ -422,12 +499,12 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     // The filter cannot sign a coefficient: redo this node
                     // exactly.
                     self.float_failures += 1;
-                    self.stack.push(Item::Node(Node::exact(
-                        self.base.exact(),
-                        node.lo,
-                        node.hi,
-                        node.depth,
-                    )));
+                    let exact = Node::exact(self.base.exact(), node.lo, node.hi, node.depth);
+                    if let Coeffs::Exact(b) = &exact.coeffs {
+                        let within = self.charge(b, end_bits(b));
+                        self.exhausted |= !within;
+                    }
+                    self.stack.push(Item::Node(exact));
                     continue;
                 }
             };

@@ -22,7 +22,7 @@ mod isolate;
 mod root;
 mod scaled;
 
-pub use isolate::RootIter;
+pub use isolate::{RootIter, MAX_EXACT_WORK};
 pub use root::{ExactJet, RealRoot, SignModel, SignProbe};
 pub use scaled::ScaledPoly;
 

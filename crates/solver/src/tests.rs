@@ -213,3 +213,19 @@ fn clusters_far_below_bisection_depth() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi());
 }
+
+/// The bound on exact work stops an isolation and says so; below it the
+/// same isolation runs to the end and is not marked.
+#[test]
+fn exact_work_bound_stops_and_says_so() {
+    let a = Rat::from_frac(1, 3);
+    let p = product(&[(a.clone(), 1), (&a + &pow2(3000), 1)]);
+    let mut bounded = isolate(&p, &Rat::zero(), &Rat::one())
+        .expect("nonzero")
+        .with_max_work(1_000);
+    let found: Vec<_> = bounded.by_ref().collect();
+    assert!(bounded.exhausted() && found.len() < 2, "{found:?}");
+    let mut free = isolate(&p, &Rat::zero(), &Rat::one()).expect("nonzero");
+    assert_eq!(free.by_ref().count(), 2);
+    assert!(!free.exhausted() && free.work() > 1_000);
+}
