@@ -1,6 +1,6 @@
 //! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
 
-use ccd_exact::{run_toml, to_json, Arithmetic, Options, Outcome};
+use ccd_exact::{run_toml, to_json, Arithmetic, Geometry, Options, Outcome};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -133,6 +133,30 @@ fn table(out: &Outcome) -> String {
             c.lo,
             c.hi
         );
+        match out.geometry.get(k) {
+            Some(Geometry::Point {
+                point,
+                normal,
+                certified,
+            }) => {
+                let mark = if *certified { "" } else { "  (NOT certified)" };
+                let show = |b: &ccd_exact::Box3| b.approx(12).join(", ");
+                let _ = writeln!(
+                    t,
+                    "    point  ≈ ({}){mark}  (box width {:.1e})\n    normal ≈ ({})  (A's outward normal, largest component ±1)",
+                    show(point),
+                    point.width().to_f64(),
+                    show(normal)
+                );
+            }
+            Some(Geometry::NotASinglePoint) => {
+                t.push_str("    point: not a single point\n");
+            }
+            Some(Geometry::Unknown { reason }) => {
+                let _ = writeln!(t, "    point: not computed ({reason})");
+            }
+            None => {}
+        }
     }
     match &out.first_contact {
         Some(fc) => {

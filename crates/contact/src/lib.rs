@@ -39,7 +39,7 @@
 #![warn(missing_docs)]
 
 use ccd_arith::{Interval, Rat, RingOps};
-use ccd_enclosure::{quadric_at, BigInterval, Real, Trig};
+use ccd_enclosure::{centred_quadrics, BigInterval, Real, Trig};
 use ccd_motion::Body;
 use ccd_quadric::{adj4_column, characteristic, Mat4};
 use ccd_subres::{closed_form, Quantity};
@@ -268,8 +268,10 @@ fn try_array<T, const N: usize>(
 }
 
 /// [`from_quadrics`] with `A(t)`, `B(t)` enclosed at the time enclosure `t`
-/// (time itself, not `u`) through `ccd_enclosure::quadric_at`, which serves
-/// every motion kind.
+/// (time itself, not `u`) through `ccd_enclosure::centred_quadrics`, which
+/// serves every motion kind: in a frame centred between the bodies (the
+/// entries stay small, so the heavily cancelling determinants stay
+/// tight), the point moved back to world coordinates.
 pub fn at_time<N: Scalar + Trig>(
     a: &Body,
     b: &Body,
@@ -278,11 +280,12 @@ pub fn at_time<N: Scalar + Trig>(
     case: Case,
     prec: u32,
 ) -> Result<Enclosed<N>, ContactError> {
-    from_quadrics(
-        &quadric_at(a, span, t, prec),
-        &quadric_at(b, span, t, prec),
-        case,
-    )
+    let (origin, qa, qb) = centred_quadrics(a, b, span, t, prec);
+    let mut e = from_quadrics(&qa, &qb, case)?;
+    for (x, s) in e.point.iter_mut().zip(&origin) {
+        *x = x.plus(&N::of_rat(s, prec));
+    }
+    Ok(e)
 }
 
 fn to_box<S: Scalar>(v: &[S; 3]) -> Option<Box3> {
@@ -404,7 +407,7 @@ pub fn enclose(
 /// `two_double` says so or `sr11` encloses 0 there.
 pub fn estimate(a: &Body, b: &Body, span: &[Rat; 2], t: &Rat, two_double: bool) -> Geometry {
     let ti = Interval::from_rat(t);
-    let (qa, qb) = (quadric_at(a, span, &ti, 53), quadric_at(b, span, &ti, 53));
+    let (origin, qa, qb) = centred_quadrics(a, b, span, &ti, 53);
     let f = characteristic(&qa, &qb);
     let sr11_zero = closed_form(&f, Quantity::Sr11).is_none_or(|s| s.contains_zero());
     let case = if two_double || sr11_zero {
@@ -415,7 +418,10 @@ pub fn estimate(a: &Body, b: &Body, span: &[Rat; 2], t: &Rat, two_double: bool) 
     // Midpoints of every entry: plain f64 values, the float path's numbers.
     let mid = |m: &Mat4<Interval>| m.map(|row| row.map(|x| Interval::point(x.mid())));
     match from_quadrics(&mid(&qa), &mid(&qb), case) {
-        Ok(e) => {
+        Ok(mut e) => {
+            for (x, s) in e.point.iter_mut().zip(&origin) {
+                *x = Interval::point(x.mid() + s.to_f64());
+            }
             let exact = |v: &[Interval; 3]| -> Option<Box3> {
                 let x: Vec<Rat> = v
                     .iter()
