@@ -36,6 +36,9 @@ pub struct Options {
     pub first_contact_only: bool,
     /// Exact (certified) or float.
     pub arithmetic: Arithmetic,
+    /// Compute the contact point and normal of each contact
+    /// ([`Outcome::geometry`]); `false` leaves it empty (default `true`).
+    pub contact_geometry: bool,
 }
 
 impl Default for Options {
@@ -44,6 +47,7 @@ impl Default for Options {
             digits: 15,
             first_contact_only: false,
             arithmetic: Arithmetic::Exact,
+            contact_geometry: true,
         }
     }
 }
@@ -174,7 +178,13 @@ fn contacts_at<M: SignModel + Clone>(
                 hi: root.hi().clone(),
                 certified: true,
             };
-            let geometry = bodies.exact(&root, coefficients, zeros);
+            let geometry = if opts.contact_geometry {
+                bodies.exact(&root, coefficients, zeros)
+            } else {
+                Geometry::Unknown {
+                    reason: "not asked for".into(),
+                }
+            };
             contacts.push((instant, geometry));
             if opts.first_contact_only {
                 return Some(contacts);
@@ -231,7 +241,9 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
             first_contact_only: opts.first_contact_only,
         };
         let mut outcome = ccd_float::solve(&CharPoly::from_placed(&a, &b), &scene.span, &float);
-        outcome.geometry = crate::geometry::estimates(scene, &outcome);
+        if opts.contact_geometry {
+            outcome.geometry = crate::geometry::estimates(scene, &outcome);
+        }
         return Ok(outcome);
     }
     let mut stats = Stats::default();
@@ -308,6 +320,8 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         ))),
         state => Ok(state),
     })?;
-    outcome.geometry = geometry;
+    if opts.contact_geometry {
+        outcome.geometry = geometry;
+    }
     Ok(outcome)
 }

@@ -98,7 +98,15 @@ impl<'a> Bodies<'a> {
             }
             let (lo, hi) = (self.time(r.lo()), self.time(r.hi()));
             let span = &self.scene.span;
-            match enclose(&self.scene.a, &self.scene.b, span, (&lo, &hi), case, &self.goal, true) {
+            match enclose(
+                &self.scene.a,
+                &self.scene.b,
+                span,
+                (&lo, &hi),
+                case,
+                &self.goal,
+                true,
+            ) {
                 Ok(g) if self.goal.met(&g) => return g,
                 other => last = Some(other),
             }
@@ -141,20 +149,28 @@ pub(crate) fn helical(scene: &Scene, outcome: &Outcome, opts: &Options) -> Vec<G
         .contacts
         .iter()
         .map(|c| {
-            let t = ccd_arith::Interval::from_rat(&c.lo).hull(&ccd_arith::Interval::from_rat(&c.hi));
+            let t =
+                ccd_arith::Interval::from_rat(&c.lo).hull(&ccd_arith::Interval::from_rat(&c.hi));
             let qa = ccd_enclosure::quadric_at(&scene.a, &scene.span, &t, 53);
             let qb = ccd_enclosure::quadric_at(&scene.b, &scene.span, &t, 53);
             let f = ccd_quadric::characteristic(&qa, &qb);
-            let sr11_nonzero =
-                closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
+            let sr11_nonzero = closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
             let (case, proven) = if sr11_nonzero {
                 (Case::Simple, true)
             } else {
                 (Case::TwoDouble, sr11_structural)
             };
             let certified = c.certified && proven;
-            enclose(&scene.a, &scene.b, &scene.span, (&c.lo, &c.hi), case, &goal, certified)
-                .unwrap_or_else(failed)
+            enclose(
+                &scene.a,
+                &scene.b,
+                &scene.span,
+                (&c.lo, &c.hi),
+                case,
+                &goal,
+                certified,
+            )
+            .unwrap_or_else(failed)
         })
         .collect()
 }

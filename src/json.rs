@@ -58,7 +58,10 @@ fn contact(i: &Instant, g: Option<&Geometry>, digits: u32) -> Value {
             Geometry::Unknown { reason } => {
                 obj.insert("point".into(), Value::Null);
                 obj.insert("normal".into(), Value::Null);
-                obj.insert("point_note".into(), format!("not computed: {reason}").into());
+                obj.insert(
+                    "point_note".into(),
+                    format!("not computed: {reason}").into(),
+                );
             }
         }
     }

@@ -67,7 +67,9 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
     };
     let mut outcome =
         ccd_enclosure::run(&scene.a, &scene.b, &scene.span, &opts).map_err(CcdError::from)?;
-    outcome.geometry = geometry::helical(scene, &outcome, options);
+    if options.contact_geometry {
+        outcome.geometry = geometry::helical(scene, &outcome, options);
+    }
     Ok(outcome)
 }
 
