@@ -179,7 +179,7 @@ fn contacts_at<M: SignModel + Clone>(
                 certified: true,
             };
             let geometry = if opts.contact_geometry {
-                bodies.exact(&root, coefficients, zeros)
+                bodies.exact(&mut root, coefficients, zeros)
             } else {
                 Geometry::Unknown {
                     reason: "not asked for".into(),

@@ -13,9 +13,11 @@ use ccd_solver::{RealRoot, SignModel};
 use ccd_subres::{closed_form, Quantity};
 use ccd_timeline::{Box3, Geometry, Outcome};
 
-/// Times the exact path narrows a contact's enclosure (by `2^−64` each)
-/// when the box is wider than the goal at every precision tried.
-const REFINEMENTS: usize = 4;
+/// The exact path's stages, cheapest first: how far to narrow the
+/// contact's enclosure first (a factor `2^−bits`) and the precisions then
+/// tried (53: `f64` intervals). The exact rational evaluation at a rational
+/// instant comes after the `f64` stages.
+const STAGES: [(i64, &[u32]); 4] = [(0, &[53]), (20, &[53]), (64, &[128]), (64, &[256, 512])];
 
 /// What the exact path needs to compute the geometry of its contacts.
 pub(crate) struct Bodies<'a> {
@@ -74,14 +76,14 @@ impl<'a> Bodies<'a> {
     /// of Theorem 3.10(2) is decided exactly (the sign of `sr11` at the
     /// root); then interval evaluation at increasing precision, and, while
     /// the box is wider than the goal, a narrower enclosure of the instant
-    /// (on a copy: the reported instant is unchanged).
+    /// (after the instant has been reported: the reported instant is
+    /// unchanged).
     pub(crate) fn exact<M: SignModel + Clone>(
         &self,
-        root: &RealRoot<M>,
+        r: &mut RealRoot<M>,
         coefficients: &Coefficients,
         zeros: &[Quantity],
     ) -> Geometry {
-        let mut r = root.clone();
         let case = if zeros.contains(&Quantity::Sr11)
             || r.sign_with(&coefficients.model(Quantity::Sr11)) == 0
         {
@@ -90,28 +92,23 @@ impl<'a> Bodies<'a> {
             Case::Simple
         };
         let mut last = None;
-        for _ in 0..=REFINEMENTS {
-            if r.lo() == r.hi() {
+        for (k, (bits, precisions)) in STAGES.into_iter().enumerate() {
+            if bits > 0 && r.lo() != r.hi() {
+                let narrower = r.width().mul_pow2(-bits);
+                r.refine_to(&narrower);
+            }
+            if k >= 2 && r.lo() == r.hi() {
                 if let Some(g) = self.at_rational(r.lo(), case) {
                     return g;
                 }
             }
             let (lo, hi) = (self.time(r.lo()), self.time(r.hi()));
-            let span = &self.scene.span;
-            match enclose(
-                &self.scene.a,
-                &self.scene.b,
-                span,
-                (&lo, &hi),
-                case,
-                &self.goal,
-                true,
-            ) {
-                Ok(g) if self.goal.met(&g) => return g,
+            let (a, b, span) = (&self.scene.a, &self.scene.b, &self.scene.span);
+            let goal = &self.goal;
+            match enclose(a, b, span, (&lo, &hi), case, goal, true, precisions) {
+                Ok(g) if goal.met(&g) => return g,
                 other => last = Some(other),
             }
-            let narrower = r.width().mul_pow2(-64);
-            r.refine_to(&narrower);
         }
         match last {
             // Certified, only wider than the goal.
@@ -151,8 +148,8 @@ pub(crate) fn helical(scene: &Scene, outcome: &Outcome, opts: &Options) -> Vec<G
         .map(|c| {
             let t =
                 ccd_arith::Interval::from_rat(&c.lo).hull(&ccd_arith::Interval::from_rat(&c.hi));
-            let qa = ccd_enclosure::quadric_at(&scene.a, &scene.span, &t, 53);
-            let qb = ccd_enclosure::quadric_at(&scene.b, &scene.span, &t, 53);
+            let (_, qa, qb) =
+                ccd_enclosure::centred_quadrics(&scene.a, &scene.b, &scene.span, &t, 53);
             let f = ccd_quadric::characteristic(&qa, &qb);
             let sr11_nonzero = closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
             let (case, proven) = if sr11_nonzero {
@@ -161,16 +158,9 @@ pub(crate) fn helical(scene: &Scene, outcome: &Outcome, opts: &Options) -> Vec<G
                 (Case::TwoDouble, sr11_structural)
             };
             let certified = c.certified && proven;
-            enclose(
-                &scene.a,
-                &scene.b,
-                &scene.span,
-                (&c.lo, &c.hi),
-                case,
-                &goal,
-                certified,
-            )
-            .unwrap_or_else(failed)
+            let (a, b, span) = (&scene.a, &scene.b, &scene.span);
+            let all = &ccd_contact::PRECISIONS;
+            enclose(a, b, span, (&c.lo, &c.hi), case, &goal, certified, all).unwrap_or_else(failed)
         })
         .collect()
 }

@@ -62,28 +62,39 @@ fn quadric_f64(body: &Body, span: &[Rat; 2], t: &Rat) -> [[f64; 4]; 4] {
 }
 
 /// `XᵀQX` enclosed for `X = (box, 1)`, `Q` enclosed at the time enclosure
-/// `[lo, hi]`, in 256-bit intervals.
+/// `[lo, hi]`, in 256-bit intervals, by the mean value form around the
+/// box's midpoint `m`: `v(m) + ∇v(box)·(box − m)` (the plain interval form
+/// loses `|Q|·|X|²` to the dependency problem far from the origin).
 fn form_on_box(body: &Body, span: &[Rat; 2], lo: &Rat, hi: &Rat, b: &Box3) -> BigInterval {
+    use ccd_arith::RingOps;
     let prec = 256;
-    let t = BigInterval::from_rat(lo, prec).hull(&BigInterval::from_rat(hi, prec));
+    let k = |q: &Rat| BigInterval::from_rat(q, prec);
+    let t = k(lo).hull(&k(hi));
     let q: Mat4<BigInterval> = quadric_at(body, span, &t, prec);
-    let x: [BigInterval; 4] = std::array::from_fn(|i| {
+    let m = b.midpoint();
+    let xm: [BigInterval; 4] =
+        std::array::from_fn(|i| if i == 3 { k(&Rat::one()) } else { k(&m[i]) });
+    let xb: [BigInterval; 4] = std::array::from_fn(|i| {
         if i == 3 {
-            BigInterval::from_rat(&Rat::one(), prec)
+            k(&Rat::one())
         } else {
-            BigInterval::from_rat(&b.lo[i], prec).hull(&BigInterval::from_rat(&b.hi[i], prec))
+            k(&b.lo[i]).hull(&k(&b.hi[i]))
         }
     });
-    let mut s = BigInterval::from_rat(&Rat::zero(), prec);
+    let mut v = k(&Rat::zero());
     for i in 0..4 {
         for j in 0..4 {
-            s = ccd_arith::RingOps::plus(
-                &s,
-                &ccd_arith::RingOps::times(&x[i], &ccd_arith::RingOps::times(&q[i][j], &x[j])),
-            );
+            v = v.plus(&xm[i].times(&q[i][j].times(&xm[j])));
         }
     }
-    s
+    for i in 0..3 {
+        let g = (0..4).fold(k(&Rat::zero()), |acc, j| acc.plus(&q[i][j].times(&xb[j])));
+        v = v.plus(
+            &g.times(&xb[i].minus(&xm[i]))
+                .times(&BigInterval::from_i64(2)),
+        );
+    }
+    v
 }
 
 fn gradient(q: &[[f64; 4]; 4], x: &[f64; 3]) -> [f64; 3] {
@@ -184,13 +195,24 @@ fn check_contact(name: &str, s: &Scene, out: &Outcome, k: usize) -> f64 {
     let (point, normal, certified) = point_of(&out.geometry[k]);
     assert_eq!(certified, c.certified, "{name}: contact {k}");
     let size = size(s);
+    let rmin =
+        s.a.radii
+            .iter()
+            .chain(&s.b.radii)
+            .map(Rat::to_f64)
+            .fold(f64::INFINITY, f64::min);
+    let rational_scene = s.a.motion.is_rational() && s.b.motion.is_rational();
     if c.certified {
-        // A certified box meets the default goal or is at least narrow.
-        assert!(point.width().to_f64() <= 1e-12 * size, "{name}: {point:?}");
-        assert!(normal.width().to_f64() <= 1e-12, "{name}: {normal:?}");
+        // The exact path meets the default goal (ccd_contact::Goal); the
+        // helical path does not narrow the time enclosure, so its boxes
+        // are only as narrow as that allows.
+        let slack = if rational_scene { 1.0 } else { 1e3 };
+        let w = point.width().to_f64();
+        assert!(w <= slack * 1e-12 * size, "{name}: {point:?}");
+        let w = normal.width().to_f64();
+        assert!(w <= slack * 1e-12 * size / rmin, "{name}: {normal:?}");
     }
     let exact_instant = c.lo == c.hi && point.lo == point.hi;
-    let rational_scene = s.a.motion.is_rational() && s.b.motion.is_rational();
     if exact_instant && rational_scene {
         // Exactly on both surfaces: XᵀQX = 0 with Q exact at u.
         let [t0, t1] = &s.span;
@@ -210,8 +232,13 @@ fn check_contact(name: &str, s: &Scene, out: &Outcome, k: usize) -> f64 {
         for body in [&s.a, &s.b] {
             let v = form_on_box(body, &s.span, &c.lo, &c.hi, point);
             assert!(v.contains_zero(), "{name}: XᵀQX ∈ {v:?} excludes 0");
-            // Narrow enough that a point off the surface by 1e-9 would fail.
-            assert!(v.width_f64() < 1e-10 * size * size, "{name}: {v:?}");
+            // Narrow enough that a point off the surface by 1e-10 of the
+            // size would fail: |XᵀQX| grows like |∇Q|·distance (Q has an
+            // arbitrary positive scale, so compare with its gradient).
+            let q = quadric_f64(body, &s.span, &c.midpoint());
+            let g = gradient(&q, &mid(point));
+            let g = g.iter().map(|x| x * x).sum::<f64>().sqrt();
+            assert!(v.width_f64() < 1e-8 * g * size, "{name}: {v:?}, |∇Q| = {g}");
         }
     }
     let t = c.midpoint();
@@ -346,15 +373,24 @@ fn rational_tangency_known_by_construction() {
     assert_eq!(out.contacts[0].hi, half);
     let (p, n, certified) = point_of(&out.geometry[0]);
     assert!(certified);
-    assert_eq!(
-        *p,
-        Box3::point([Rat::from_frac(8, 5), Rat::from_frac(3, 5), Rat::zero()])
+    let (want_p, want_n) = (
+        [Rat::from_frac(8, 5), Rat::from_frac(3, 5), Rat::zero()],
+        [Rat::from_frac(2, 3), Rat::one(), Rat::zero()],
     );
-    assert_eq!(
-        *n,
-        Box3::point([Rat::from_frac(2, 3), Rat::one(), Rat::zero()])
-    );
+    for i in 0..3 {
+        assert!(p.lo[i] <= want_p[i] && want_p[i] <= p.hi[i], "{p:?}");
+        assert!(n.lo[i] <= want_n[i] && want_n[i] <= n.hi[i], "{n:?}");
+    }
     check_contact("tangency (2b)", &s, &out, 0);
+    // At this rational instant the rational point itself is also found
+    // exactly (what the exact path falls back to when f64 intervals are
+    // too wide).
+    let rat = |m: [[ccd_arith::Int; 4]; 4]| m.map(|row| row.map(Rat::from_int));
+    let u = Rat::from_frac(1, 2);
+    let qa = rat(placed_quadric(&s.a, &s.span).unwrap().quadric_at(&u));
+    let qb = rat(placed_quadric(&s.b, &s.span).unwrap().quadric_at(&u));
+    let e = ccd_contact::from_quadrics(&qa, &qb, ccd_contact::Case::TwoDouble).unwrap();
+    assert_eq!((e.point, e.normal), (want_p, want_n));
 }
 
 #[test]

@@ -79,11 +79,22 @@ pub trait Scalar: RingOps {
     fn proven_sign(&self) -> Option<i32>;
     /// A value near the middle (not certified; for choices only).
     fn estimate(&self) -> f64;
+    /// The width, approximately (0 for exact values; for stopping rules
+    /// only).
+    fn estimate_width(&self) -> f64;
     /// The two ends exactly, `None` when unbounded.
     fn bounds(&self) -> Option<(Rat, Rat)>;
     /// The rational `q`, enclosed with `prec` bits where the type has a
     /// choice.
     fn of_rat(q: &Rat, prec: u32) -> Self;
+    /// One interval Newton step for a root of `g` in `self` with `dg`
+    /// enclosing `g′` on `self`: `(m − g(m)/dg) ∩ self` for a point `m` of
+    /// `self`. Every root of `g` in `self` stays in the result; `None` when
+    /// the step cannot be taken (or, for exact values, is not needed).
+    fn newton(&self, g: impl Fn(&Self) -> Self, dg: &Self) -> Option<Self>;
+    /// The common part of two enclosures of the same value (`None` for
+    /// exact values, which need no tightening).
+    fn meet(&self, o: &Self) -> Option<Self>;
 }
 
 impl Scalar for Rat {
@@ -108,11 +119,20 @@ impl Scalar for Rat {
     fn estimate(&self) -> f64 {
         self.to_f64()
     }
+    fn estimate_width(&self) -> f64 {
+        0.0
+    }
     fn bounds(&self) -> Option<(Rat, Rat)> {
         Some((self.clone(), self.clone()))
     }
     fn of_rat(q: &Rat, _prec: u32) -> Self {
         q.clone()
+    }
+    fn newton(&self, _g: impl Fn(&Self) -> Self, _dg: &Self) -> Option<Self> {
+        None
+    }
+    fn meet(&self, _o: &Self) -> Option<Self> {
+        None
     }
 }
 
@@ -141,11 +161,22 @@ macro_rules! interval_scalar {
             fn estimate(&self) -> f64 {
                 Real::approx(self)
             }
+            fn estimate_width(&self) -> f64 {
+                Real::width_f64(self)
+            }
             fn bounds(&self) -> Option<(Rat, Rat)> {
                 Some((Real::lo_rat(self)?, Real::hi_rat(self)?))
             }
             fn of_rat(q: &Rat, prec: u32) -> Self {
                 <$t as Real>::constant(q, prec)
+            }
+            fn newton(&self, g: impl Fn(&Self) -> Self, dg: &Self) -> Option<Self> {
+                let m = Real::midpoint(self);
+                let step = Real::div(&g(&m), dg)?;
+                self.intersect(&m.minus(&step))
+            }
+            fn meet(&self, o: &Self) -> Option<Self> {
+                self.intersect(o)
             }
         }
     };
@@ -204,7 +235,32 @@ pub fn double_root<S: Scalar>(f: &[S; 5], case: Case) -> Result<S, ContactError>
     if nonzero(&lambda, "λ*")? < 0 {
         return Err(ContactError::Undecided("λ* > 0"));
     }
-    Ok(lambda)
+    Ok(tighten(f, lambda))
+}
+
+/// Interval Newton on `f′` from the enclosure `lambda ∋ λ*`: `λ*` is a
+/// root of `f′` (a double root of `f`) and `f″(λ*) ≠ 0` (not a triple
+/// root), so every step keeps it, and the enclosure shrinks to the
+/// rounding level of `f`'s coefficients, much tighter than the closed
+/// forms, whose terms cancel heavily. Stops when a step no longer shrinks
+/// it (or cannot be taken: `f″` not separated from 0).
+fn tighten<S: Scalar>(f: &[S; 5], mut lambda: S) -> S {
+    let [e, a, b, c, _] = f;
+    let k = |v: i64| S::from_i64(v);
+    // f′ = 4eλ³ + 3aλ² + 2bλ + c and f″ = 12eλ² + 6aλ + 2b (Horner).
+    let (e4, a3, b2) = (k(4).times(e), k(3).times(a), k(2).times(b));
+    let (e12, a6) = (k(12).times(e), k(6).times(a));
+    let d1 = |x: &S| e4.times(x).plus(&a3).times(x).plus(&b2).times(x).plus(c);
+    let d2 = |x: &S| e12.times(x).plus(&a6).times(x).plus(&b2);
+    for _ in 0..8 {
+        let before = lambda.estimate_width();
+        match lambda.newton(d1, &d2(&lambda)) {
+            Some(next) if next.estimate_width() < before => lambda = next,
+            Some(next) => return next,
+            None => return lambda,
+        }
+    }
+    lambda
 }
 
 /// The contact point and normal from the quadric matrices at `t*` (or
@@ -230,6 +286,7 @@ pub fn from_quadrics<S: Scalar>(
             .divide(&col[3])
             .ok_or(ContactError::Undecided("adj(M)[3][j]"))
     })?;
+    let point = krawczyk(&m, point);
     let gradient: [S; 3] = std::array::from_fn(|r| {
         (0..3).fold(a[r][3].clone(), |acc, c| {
             acc.plus(&a[r][c].times(&point[c]))
@@ -252,6 +309,66 @@ pub fn from_quadrics<S: Scalar>(
         }
     })?;
     Ok(Enclosed { point, normal })
+}
+
+/// Tightens the box `x0 ∋ x*` for the solution of `P·x = −q` (the first
+/// three rows of `M·(x, 1) = 0`: `P` the 3×3 block of `M`, `q` its last
+/// column) by Krawczyk's operator for linear systems:
+/// `K = x̃ − C·(P·x̃ + q) + (I − C·P)·(x0 − x̃)`, `x̃` the midpoint, `C` an
+/// approximate inverse of `P` in `f64`. For the true `P*`, `q*` enclosed
+/// by `P`, `q`, `x* = x̃ − C·(P*·x̃ + q*) + (I − C·P*)·(x* − x̃)` exactly,
+/// so `x* ∈ K ∩ x0` whatever `C` is; with a good `C` the result is as
+/// narrow as the inputs allow (the adjugate's cofactors lose more to the
+/// dependency problem).
+fn krawczyk<S: Scalar>(m: &Mat4<S>, x0: [S; 3]) -> [S; 3] {
+    let mid: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].estimate()));
+    let Some(c) = inverse3(&mid) else {
+        return x0;
+    };
+    let point = |v: f64| Rat::from_f64_exact(v).map(|q| S::of_rat(&q, 0));
+    let Some(c): Option<Vec<S>> = c.iter().flatten().map(|v| point(*v)).collect() else {
+        return x0;
+    };
+    let c = |i: usize, j: usize| &c[3 * i + j];
+    let mut x = x0;
+    for _ in 0..2 {
+        let Some(xt): Option<Vec<S>> = x.iter().map(|v| point(v.estimate())).collect() else {
+            return x;
+        };
+        // r = P·x̃ + q.
+        let r: Vec<S> = (0..3)
+            .map(|i| (0..3).fold(m[i][3].clone(), |acc, k| acc.plus(&m[i][k].times(&xt[k]))))
+            .collect();
+        let next: Vec<Option<S>> = (0..3)
+            .map(|i| {
+                let mut v = xt[i].clone();
+                for k in 0..3 {
+                    v = v.minus(&c(i, k).times(&r[k]));
+                }
+                for j in 0..3 {
+                    // (I − C·P)[i][j]
+                    let cp = (0..3).fold(S::zero(), |acc, k| acc.plus(&c(i, k).times(&m[k][j])));
+                    let e = S::from_i64((i == j) as i64).minus(&cp);
+                    v = v.plus(&e.times(&x[j].minus(&xt[j])));
+                }
+                v.meet(&x[i])
+            })
+            .collect();
+        match next.into_iter().collect::<Option<Vec<S>>>() {
+            Some(v) => x = std::array::from_fn(|i| v[i].clone()),
+            None => return x,
+        }
+    }
+    x
+}
+
+/// The inverse of a 3×3 `f64` matrix (adjugate over determinant), if
+/// finite: only an approximate preconditioner.
+fn inverse3(m: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
+    let adj = ccd_quadric::adj3(m);
+    let det = (0..3).map(|k| m[0][k] * adj[k][0]).sum::<f64>();
+    let inv = adj.map(|row| row.map(|v| v / det));
+    inv.iter().flatten().all(|v| v.is_finite()).then_some(inv)
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
@@ -308,9 +425,11 @@ impl<S: Scalar> Enclosed<S> {
 }
 
 /// The width goal for a contact box: each point coordinate within
-/// `size·10^(−k)` and each normal component within `10^(−k)`, `size` the
-/// scene's largest radius, `k = max(12, digits − 3)` (12 by default, more
-/// with `--digits` above 15).
+/// `size·10^(−k)`, `size` the scene's largest radius,
+/// `k = max(12, digits − 3)` (12 by default, more with `--digits` above
+/// 15), and each normal component within `10^(−k)·size/r_min` (`r_min` the
+/// smallest radius: the point's goal carried through the largest
+/// curvature, which is what the normal's enclosure can achieve from it).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Goal {
     /// For the point's coordinates.
@@ -329,6 +448,13 @@ impl Goal {
             .max()
             .cloned()
             .unwrap_or_else(Rat::one);
+        let smallest = a
+            .radii
+            .iter()
+            .chain(&b.radii)
+            .min()
+            .cloned()
+            .unwrap_or_else(Rat::one);
         let tol = Rat::new(
             ccd_arith::Int::one(),
             ccd_arith::Int::pow10(digits.saturating_sub(3).max(12)),
@@ -336,7 +462,7 @@ impl Goal {
         .unwrap_or_else(Rat::one);
         Goal {
             point: &size * &tol,
-            normal: tol,
+            normal: &(&size / &smallest) * &tol,
         }
     }
     /// Whether a result meets the goal.
@@ -355,7 +481,8 @@ impl Goal {
 pub const PRECISIONS: [u32; 4] = [53, 128, 256, 512];
 
 /// The contact geometry at the time enclosure `[lo, hi]` (time itself),
-/// at increasing precision ([`PRECISIONS`]) until `goal` is met: the first
+/// at increasing precision (`precisions`, in bits, 53 meaning `f64`
+/// intervals; [`PRECISIONS`] by default) until `goal` is met: the first
 /// result that meets it, otherwise the narrowest one found (still an
 /// enclosure), otherwise the last error. `certified` is passed through to
 /// the result (the caller knows whether the instant and the case are
@@ -368,10 +495,11 @@ pub fn enclose(
     case: Case,
     goal: &Goal,
     certified: bool,
+    precisions: &[u32],
 ) -> Result<Geometry, ContactError> {
     let mut best: Option<Geometry> = None;
     let mut error = ContactError::Kernel;
-    for prec in PRECISIONS {
+    for &prec in precisions {
         let result = if prec == 53 {
             let t = Interval::from_rat(lo).hull(&Interval::from_rat(hi));
             at_time(a, b, span, &t, case, prec).map(|e| e.to_geometry(certified))

@@ -121,39 +121,5 @@ fn goal_follows_digits_and_size() {
     let g = Goal::new(&body(4), &body(2), 15);
     assert_eq!(g.point, Rat::new(Int::from(4), Int::pow10(12)).unwrap());
     let g = Goal::new(&body(4), &body(2), 20);
-    assert_eq!(g.normal, Rat::new(Int::one(), Int::pow10(17)).unwrap());
-}
-
-#[test]
-fn debug_example_5_1() {
-    use ccd_motion::{Bezier, Motion};
-    let v = |x: [i64; 3]| x.map(Rat::from);
-    let a = Body {
-        radii: v([2, 1, 1]),
-        motion: Motion::Translation {
-            center: Bezier {
-                points: vec![v([11, 0, 0]), v([-1, 0, 0])],
-                weights: None,
-            },
-            orientation: Motion::identity(),
-        },
-    };
-    let b = Body {
-        radii: v([2, 1, 1]),
-        motion: Motion::Translation {
-            center: Bezier {
-                points: vec![v([3, -2, -4]), v([3, 2, 0])],
-                weights: None,
-            },
-            orientation: Motion::identity(),
-        },
-    };
-    let span = [Rat::zero(), Rat::one()];
-    let t = Rat::from_f64_exact(0.539504286779636).unwrap();
-    let ti = Interval::from_rat(&t);
-    let ti = ti.hull(&Interval::point(ti.hi + 1e-15));
-    let (_, qa, qb) = centred_quadrics(&a, &b, &span, &ti, 53);
-    let f = characteristic(&qa, &qb);
-    eprintln!("f = {f:?}");
-    eprintln!("{:?}", at_time(&a, &b, &span, &ti, Case::TwoDouble, 53));
+    assert_eq!(g.normal, Rat::new(Int::from(4), Int::pow10(17)).unwrap());
 }
