@@ -232,7 +232,7 @@ fn check_contact(name: &str, s: &Scene, out: &Outcome, k: usize) -> f64 {
         for body in [&s.a, &s.b] {
             let v = form_on_box(body, &s.span, &c.lo, &c.hi, point);
             assert!(v.contains_zero(), "{name}: XᵀQX ∈ {v:?} excludes 0");
-            // Narrow enough that a point off the surface by 1e-10 of the
+            // Narrow enough that a point off the surface by 1e-8 of the
             // size would fail: |XᵀQX| grows like |∇Q|·distance (Q has an
             // arbitrary positive scale, so compare with its gradient).
             let q = quadric_f64(body, &s.span, &c.midpoint());
