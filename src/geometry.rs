@@ -105,7 +105,7 @@ impl<'a> Bodies<'a> {
             let (lo, hi) = (self.time(r.lo()), self.time(r.hi()));
             let (a, b, span) = (&self.scene.a, &self.scene.b, &self.scene.span);
             let goal = &self.goal;
-            match enclose(a, b, span, (&lo, &hi), case, goal, true, precisions) {
+            match enclose((a, b, span), (&lo, &hi), case, goal, true, precisions) {
                 Ok(g) if goal.met(&g) => return g,
                 other => last = Some(other),
             }
@@ -160,7 +160,8 @@ pub(crate) fn helical(scene: &Scene, outcome: &Outcome, opts: &Options) -> Vec<G
             let certified = c.certified && proven;
             let (a, b, span) = (&scene.a, &scene.b, &scene.span);
             let all = &ccd_contact::PRECISIONS;
-            enclose(a, b, span, (&c.lo, &c.hi), case, &goal, certified, all).unwrap_or_else(failed)
+            enclose((a, b, span), (&c.lo, &c.hi), case, &goal, certified, all)
+                .unwrap_or_else(failed)
         })
         .collect()
 }

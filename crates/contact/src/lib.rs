@@ -342,8 +342,8 @@ fn krawczyk<S: Scalar>(m: &Mat4<S>, x0: [S; 3]) -> [S; 3] {
         let next: Vec<Option<S>> = (0..3)
             .map(|i| {
                 let mut v = xt[i].clone();
-                for k in 0..3 {
-                    v = v.minus(&c(i, k).times(&r[k]));
+                for (k, rk) in r.iter().enumerate() {
+                    v = v.minus(&c(i, k).times(rk));
                 }
                 for j in 0..3 {
                     // (I − C·P)[i][j]
@@ -488,9 +488,7 @@ pub const PRECISIONS: [u32; 4] = [53, 128, 256, 512];
 /// the result (the caller knows whether the instant and the case are
 /// proven).
 pub fn enclose(
-    a: &Body,
-    b: &Body,
-    span: &[Rat; 2],
+    (a, b, span): (&Body, &Body, &[Rat; 2]),
     (lo, hi): (&Rat, &Rat),
     case: Case,
     goal: &Goal,

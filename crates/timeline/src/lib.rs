@@ -114,6 +114,9 @@ impl Box3 {
 /// Where and in which direction the bodies touch at an isolated contact
 /// instant `t*`: the kernel of `λ*·A(t*) + B(t*)` for the positive double
 /// root `λ*` of `f(λ; t*) = det(λA(t*) + B(t*))` (Wang et al. 2001).
+// The large variant is the usual one (a point per contact): boxing it
+// would add an allocation to every contact to shrink the rare others.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Geometry {
     /// The contact point and `A`'s outward normal there (pointing into
