@@ -1,4 +1,4 @@
-//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
+//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--no-geometry]`
 
 use ccd_exact::{run_toml, to_json, Arithmetic, Geometry, Options, Outcome};
 use std::io::Write;
@@ -9,6 +9,7 @@ ccd-exact: exact, certified continuous collision detection for two moving ellips
 
 USAGE:
     ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--arithmetic exact|float]
+              [--no-geometry]
 
 OPTIONS:
     --json            print the result as JSON (scene-format.md, format 1)
@@ -16,6 +17,7 @@ OPTIONS:
     --first-contact   stop at the earliest instant the bodies are not separate
     --arithmetic M    exact (default: every answer certified) or float (the
                       paper's f64 Bernstein solver: faster, NOT certified)
+    --no-geometry     skip the contact point and normal of each contact
     -h, --help        this help
     -V, --version     the version
 
@@ -50,6 +52,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
             }
             "--json" => json = true,
             "--first-contact" => options.first_contact_only = true,
+            "--no-geometry" => options.contact_geometry = false,
             "--arithmetic" => {
                 options.arithmetic = match args.next().as_deref() {
                     Some("exact") => Arithmetic::Exact,

@@ -95,6 +95,8 @@ pub trait Scalar: RingOps {
     /// The common part of two enclosures of the same value (`None` for
     /// exact values, which need no tightening).
     fn meet(&self, o: &Self) -> Option<Self>;
+    /// The finite `f64` `v` exactly, at the precision of `like`.
+    fn of_f64(v: f64, like: &Self) -> Option<Self>;
 }
 
 impl Scalar for Rat {
@@ -133,6 +135,9 @@ impl Scalar for Rat {
     }
     fn meet(&self, _o: &Self) -> Option<Self> {
         None
+    }
+    fn of_f64(v: f64, _like: &Self) -> Option<Self> {
+        Rat::from_f64_exact(v)
     }
 }
 
@@ -178,8 +183,30 @@ macro_rules! interval_scalar {
             fn meet(&self, o: &Self) -> Option<Self> {
                 self.intersect(o)
             }
+            fn of_f64(v: f64, like: &Self) -> Option<Self> {
+                v.is_finite()
+                    .then(|| <$t as PointOf>::point_of(v, like.precision()))
+            }
         }
     };
+}
+/// The exact point `v` (finite) in an interval type.
+trait PointOf {
+    fn point_of(v: f64, prec: u32) -> Self;
+}
+impl PointOf for Interval {
+    fn point_of(v: f64, _prec: u32) -> Self {
+        Interval::point(v)
+    }
+}
+impl PointOf for BigInterval {
+    fn point_of(v: f64, prec: u32) -> Self {
+        let mut p = BigInterval::point(
+            ccd_enclosure::Dyadic::from_f64(v).unwrap_or_else(ccd_enclosure::Dyadic::zero),
+        );
+        p.prec = prec;
+        p
+    }
 }
 interval_scalar!(Interval);
 interval_scalar!(BigInterval);
@@ -286,7 +313,7 @@ pub fn from_quadrics<S: Scalar>(
             .divide(&col[3])
             .ok_or(ContactError::Undecided("adj(M)[3][j]"))
     })?;
-    let point = krawczyk(&m, point);
+    let (point, _) = krawczyk(a, b, point, lambda);
     let gradient: [S; 3] = std::array::from_fn(|r| {
         (0..3).fold(a[r][3].clone(), |acc, c| {
             acc.plus(&a[r][c].times(&point[c]))
@@ -311,64 +338,91 @@ pub fn from_quadrics<S: Scalar>(
     Ok(Enclosed { point, normal })
 }
 
-/// Tightens the box `x0 ∋ x*` for the solution of `P·x = −q` (the first
-/// three rows of `M·(x, 1) = 0`: `P` the 3×3 block of `M`, `q` its last
-/// column) by Krawczyk's operator for linear systems:
-/// `K = x̃ − C·(P·x̃ + q) + (I − C·P)·(x0 − x̃)`, `x̃` the midpoint, `C` an
-/// approximate inverse of `P` in `f64`. For the true `P*`, `q*` enclosed
-/// by `P`, `q`, `x* = x̃ − C·(P*·x̃ + q*) + (I − C·P*)·(x* − x̃)` exactly,
-/// so `x* ∈ K ∩ x0` whatever `C` is; with a good `C` the result is as
-/// narrow as the inputs allow (the adjugate's cofactors lose more to the
-/// dependency problem).
-fn krawczyk<S: Scalar>(m: &Mat4<S>, x0: [S; 3]) -> [S; 3] {
-    let mid: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j].estimate()));
-    let Some(c) = inverse3(&mid) else {
-        return x0;
+/// Tightens the enclosures `x0 ∋ x*`, `lambda ∋ λ*` with Krawczyk's
+/// operator on the system
+///
+/// `F(x, λ) = ((λA + B)·X)₀..₂ = 0,  XᵀAX = 0`,  `X = (x, 1)`
+///
+/// (three rows of the kernel equation and the point on A's surface),
+/// whose Jacobian `[[λA + B]₀..₂,₀..₂, (A·X)₀..₂; 2(A·X)ᵀ₀..₂, 0]` is
+/// regular at a touch (unlike the kernel equation alone, which is
+/// singular at a double root). With `z̃` the midpoint of the box `Z`, `C`
+/// an approximate inverse of the Jacobian in `f64` and `J(Z)` its interval
+/// enclosure, every zero of `F` in `Z` — for every `A`, `B` in the
+/// enclosures, so the true one at `t*` — lies in
+/// `K = z̃ − C·F(z̃) + (I − C·J(Z))·(Z − z̃)`; `Z ∩ K` is kept. Only `A`
+/// and `B` enter, not `f(λ)`, so the result is as narrow as their
+/// enclosures allow.
+fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 3], S) {
+    let like = lambda.clone();
+    let mut z: [S; 4] = [x0[0].clone(), x0[1].clone(), x0[2].clone(), lambda];
+    let point = |v: f64| S::of_f64(v, &like);
+    // A·X and (λA + B)·X, rows 0..2, X = (z₀, z₁, z₂, 1).
+    let ax = |z: &[S; 4]| -> [S; 3] {
+        std::array::from_fn(|r| {
+            (0..3).fold(a[r][3].clone(), |acc, c| acc.plus(&a[r][c].times(&z[c])))
+        })
     };
-    let point = |v: f64| Rat::from_f64_exact(v).map(|q| S::of_rat(&q, 0));
-    let Some(c): Option<Vec<S>> = c.iter().flatten().map(|v| point(*v)).collect() else {
-        return x0;
+    let bx = |z: &[S; 4]| -> [S; 3] {
+        std::array::from_fn(|r| {
+            (0..3).fold(b[r][3].clone(), |acc, c| acc.plus(&b[r][c].times(&z[c])))
+        })
     };
-    let c = |i: usize, j: usize| &c[3 * i + j];
-    let mut x = x0;
-    for _ in 0..2 {
-        let Some(xt): Option<Vec<S>> = x.iter().map(|v| point(v.estimate())).collect() else {
-            return x;
-        };
-        // r = P·x̃ + q.
-        let r: Vec<S> = (0..3)
-            .map(|i| (0..3).fold(m[i][3].clone(), |acc, k| acc.plus(&m[i][k].times(&xt[k]))))
-            .collect();
-        let next: Vec<Option<S>> = (0..3)
-            .map(|i| {
-                let mut v = xt[i].clone();
-                for (k, rk) in r.iter().enumerate() {
-                    v = v.minus(&c(i, k).times(rk));
-                }
-                for j in 0..3 {
-                    // (I − C·P)[i][j]
-                    let cp = (0..3).fold(S::zero(), |acc, k| acc.plus(&c(i, k).times(&m[k][j])));
-                    let e = S::from_i64((i == j) as i64).minus(&cp);
-                    v = v.plus(&e.times(&x[j].minus(&xt[j])));
-                }
-                v.meet(&x[i])
+    let jacobian = |z: &[S; 4]| -> Mat4<S> {
+        let g = ax(z);
+        std::array::from_fn(|r| {
+            std::array::from_fn(|c| match (r < 3, c < 3) {
+                (true, true) => z[3].times(&a[r][c]).plus(&b[r][c]),
+                (true, false) => g[r].clone(),
+                (false, true) => g[c].times(&S::from_i64(2)),
+                (false, false) => S::zero(),
             })
-            .collect();
-        match next.into_iter().collect::<Option<Vec<S>>>() {
-            Some(v) => x = std::array::from_fn(|i| v[i].clone()),
-            None => return x,
+        })
+    };
+    for _ in 0..1 {
+        let Some(zt) = try_map(&z, |v| point(v.estimate())) else {
+            break;
+        };
+        let (g, h) = (ax(&zt), bx(&zt));
+        // F(z̃): rows 0..2 λ·(A X) + B X; row 3 XᵀAX = x·(A X)₀..₂ + (A X)₃.
+        let a3 = (0..3).fold(a[3][3].clone(), |acc, c| acc.plus(&a[3][c].times(&zt[c])));
+        let f: [S; 4] = std::array::from_fn(|r| {
+            if r < 3 {
+                zt[3].times(&g[r]).plus(&h[r])
+            } else {
+                (0..3).fold(a3.clone(), |acc, c| acc.plus(&zt[c].times(&g[c])))
+            }
+        });
+        let j = jacobian(&z);
+        let mid: Mat4<f64> = j.each_ref().map(|row| row.each_ref().map(|v| v.estimate()));
+        let det = ccd_quadric::det4(&mid);
+        let adj = ccd_quadric::adj4(&mid);
+        if !(det.is_finite() && det != 0.0) {
+            break;
+        }
+        let Some(c) = try_map(&adj, |row| try_map(row, |v| point(v / det))) else {
+            break;
+        };
+        let dz: [S; 4] = std::array::from_fn(|k| z[k].minus(&zt[k]));
+        let next = try_map(&[0, 1, 2, 3], |&i| {
+            let mut v = zt[i].clone();
+            for (k, fk) in f.iter().enumerate() {
+                v = v.minus(&c[i][k].times(fk));
+            }
+            for (jj, dzj) in dz.iter().enumerate() {
+                let cj = (0..4).fold(S::zero(), |acc, k| acc.plus(&c[i][k].times(&j[k][jj])));
+                let e = S::from_i64((i == jj) as i64).minus(&cj);
+                v = v.plus(&e.times(dzj));
+            }
+            v.meet(&z[i])
+        });
+        match next {
+            Some(v) => z = v,
+            None => break,
         }
     }
-    x
-}
-
-/// The inverse of a 3×3 `f64` matrix (adjugate over determinant), if
-/// finite: only an approximate preconditioner.
-fn inverse3(m: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
-    let adj = ccd_quadric::adj3(m);
-    let det = (0..3).map(|k| m[0][k] * adj[k][0]).sum::<f64>();
-    let inv = adj.map(|row| row.map(|v| v / det));
-    inv.iter().flatten().all(|v| v.is_finite()).then_some(inv)
+    let [x0, x1, x2, l] = z;
+    ([x0, x1, x2], l)
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
@@ -377,11 +431,24 @@ fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
         .unwrap_or(0)
 }
 
+/// `f` of each element, `None` if any is.
+fn try_map<T, U, const N: usize>(v: &[T; N], f: impl Fn(&T) -> Option<U>) -> Option<[U; N]> {
+    let mut out: [Option<U>; N] = std::array::from_fn(|_| None);
+    for (o, x) in out.iter_mut().zip(v) {
+        *o = Some(f(x)?);
+    }
+    Some(out.map(|o| o.expect("filled above")))
+}
+
+/// `[f(0), …, f(N − 1)]`, or the first error.
 fn try_array<T, const N: usize>(
     f: impl Fn(usize) -> Result<T, ContactError>,
 ) -> Result<[T; N], ContactError> {
-    let v: Vec<T> = (0..N).map(f).collect::<Result<_, _>>()?;
-    v.try_into().map_err(|_| ContactError::Kernel)
+    let mut out: [Option<T>; N] = std::array::from_fn(|_| None);
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = Some(f(i)?);
+    }
+    Ok(out.map(|o| o.expect("filled above")))
 }
 
 /// [`from_quadrics`] with `A(t)`, `B(t)` enclosed at the time enclosure `t`

@@ -123,3 +123,25 @@ fn goal_follows_digits_and_size() {
     let g = Goal::new(&body(4), &body(2), 20);
     assert_eq!(g.normal, Rat::new(Int::from(4), Int::pow10(17)).unwrap());
 }
+
+#[test]
+fn interval_tangency_encloses_the_exact_point_tightly() {
+    // (2a) with intervals: x²/4 + y² + z² <= 1 and an ellipsoid (1, 3/2, 1/2)
+    // at (3, 0, 0) touch at (2, 0, 0), normal +x.
+    let a = Ellipsoid::axis_aligned([2, 1, 1].map(Rat::from), [0, 0, 0].map(Rat::from));
+    let b = Ellipsoid::axis_aligned([Rat::from(1), r(3, 2), r(1, 2)], [3, 0, 0].map(Rat::from));
+    let (qa, qb) = (rat_matrix(&a), rat_matrix(&b));
+    let case = case_of(&characteristic(&qa, &qb));
+    assert_eq!(case, Case::Simple);
+    let iv = |m: &Mat4<Rat>| {
+        m.each_ref()
+            .map(|row| row.each_ref().map(Interval::from_rat))
+    };
+    let e = from_quadrics(&iv(&qa), &iv(&qb), case).unwrap();
+    for (x, want) in e.point.iter().zip([2.0, 0.0, 0.0]) {
+        assert!(x.lo <= want && want <= x.hi && x.hi - x.lo < 1e-14, "{x:?}");
+    }
+    for (n, want) in e.normal.iter().zip([1.0, 0.0, 0.0]) {
+        assert!(n.lo <= want && want <= n.hi && n.hi - n.lo < 1e-14, "{n:?}");
+    }
+}
