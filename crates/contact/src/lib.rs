@@ -566,7 +566,7 @@ pub fn enclose(
     let mut error = ContactError::Kernel;
     for &prec in precisions {
         let result = if prec == 53 {
-            let t = Interval::from_rat(lo).hull(&Interval::from_rat(hi));
+            let t = Fast::flushed(Interval::from_rat(lo).hull(&Interval::from_rat(hi)));
             at_time(a, b, span, &t, case, prec).map(|e| e.to_geometry(certified))
         } else {
             let t = BigInterval::from_rat(lo, prec).hull(&BigInterval::from_rat(hi, prec));
@@ -642,3 +642,137 @@ pub fn estimate(a: &Body, b: &Body, span: &[Rat; 2], t: &Rat, two_double: bool) 
 
 #[cfg(test)]
 mod tests;
+
+/// `f64` intervals for the contact formulas without subnormal ends.
+///
+/// Outward rounding turns every exact zero it touches into
+/// `[−2⁻¹⁰⁷⁴, 2⁻¹⁰⁷⁴]`, and arithmetic on subnormal numbers is one to two
+/// orders of magnitude slower on common hardware; the quadric matrices of
+/// axis-aligned or translating bodies are full of zeros. This wrapper keeps
+/// exact zeros exact (`0·x = 0`, `0 + x = x`, both exact) and moves a
+/// subnormal end outward to `±2⁻¹⁰²²` or to 0 (still an enclosure, only
+/// wider by less than `2⁻¹⁰²²`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fast(pub Interval);
+
+impl Fast {
+    fn flushed(i: Interval) -> Fast {
+        let tiny = f64::MIN_POSITIVE;
+        let lo = if i.lo != 0.0 && i.lo.abs() < tiny {
+            if i.lo < 0.0 {
+                -tiny
+            } else {
+                0.0
+            }
+        } else {
+            i.lo
+        };
+        let hi = if i.hi != 0.0 && i.hi.abs() < tiny {
+            if i.hi > 0.0 {
+                tiny
+            } else {
+                0.0
+            }
+        } else {
+            i.hi
+        };
+        Fast(Interval { lo, hi })
+    }
+}
+
+impl RingOps for Fast {
+    fn zero() -> Self {
+        Fast(Interval::point(0.0))
+    }
+    fn one() -> Self {
+        Fast(Interval::point(1.0))
+    }
+    fn from_i64(v: i64) -> Self {
+        Fast::flushed(Interval::from_i64(v))
+    }
+    fn is_zero(&self) -> bool {
+        self.0.lo == 0.0 && self.0.hi == 0.0
+    }
+    fn plus(&self, o: &Self) -> Self {
+        match (self.is_zero(), o.is_zero()) {
+            (true, _) => *o,
+            (_, true) => *self,
+            _ => Fast::flushed(self.0 + o.0),
+        }
+    }
+    fn minus(&self, o: &Self) -> Self {
+        match (self.is_zero(), o.is_zero()) {
+            (true, _) => Fast(-o.0),
+            (_, true) => *self,
+            _ => Fast::flushed(self.0 - o.0),
+        }
+    }
+    fn times(&self, o: &Self) -> Self {
+        if self.is_zero() || o.is_zero() {
+            return Fast::zero();
+        }
+        Fast::flushed(self.0 * o.0)
+    }
+    fn negated(&self) -> Self {
+        Fast(-self.0)
+    }
+    fn div_small(&self, k: i64) -> Self {
+        Fast::flushed(self.0.div_small(k))
+    }
+}
+
+impl Trig for Fast {
+    fn constant(q: &Rat, prec: u32) -> Self {
+        Fast::flushed(<Interval as Trig>::constant(q, prec))
+    }
+    fn sqrt_rat(q: &Rat, prec: u32) -> Self {
+        Fast::flushed(<Interval as Trig>::sqrt_rat(q, prec))
+    }
+    fn sin_cos(&self) -> (Self, Self) {
+        let (s, c) = self.0.sin_cos();
+        (Fast::flushed(s), Fast::flushed(c))
+    }
+    fn approx_value(&self) -> f64 {
+        self.0.mid()
+    }
+}
+
+impl Scalar for Fast {
+    fn divide(&self, o: &Self) -> Option<Self> {
+        self.0.divide(&o.0).map(Fast::flushed)
+    }
+    fn root(&self) -> Option<Self> {
+        self.0.root().map(Fast::flushed)
+    }
+    fn proven_sign(&self) -> Option<i32> {
+        self.0.proven_sign()
+    }
+    fn estimate(&self) -> f64 {
+        self.0.estimate()
+    }
+    fn estimate_width(&self) -> f64 {
+        self.0.estimate_width()
+    }
+    fn bounds(&self) -> Option<(Rat, Rat)> {
+        self.0.bounds()
+    }
+    fn of_rat(q: &Rat, prec: u32) -> Self {
+        Fast::flushed(Interval::of_rat(q, prec))
+    }
+    fn newton(&self, g: impl Fn(&Self) -> Self, dg: &Self) -> Option<Self> {
+        let m = Fast(Interval::point(self.0.mid()));
+        let m = if self.0.lo <= m.0.lo && m.0.hi <= self.0.hi {
+            m
+        } else {
+            return None;
+        };
+        let step = g(&m).divide(dg)?;
+        self.meet(&m.minus(&step))
+    }
+    fn meet(&self, o: &Self) -> Option<Self> {
+        self.0.meet(&o.0).map(Fast)
+    }
+    fn of_f64(v: f64, _like: &Self) -> Option<Self> {
+        v.is_finite().then(|| Fast(Interval::point(v)))
+    }
+}
