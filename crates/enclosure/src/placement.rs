@@ -282,18 +282,20 @@ pub fn centred_quadrics<N: Trig>(
 ) -> ([Rat; 3], Mat4<N>, Mat4<N>) {
     let na = inverse_placement(&a.motion, span, t, prec);
     let nb = inverse_placement(&b.motion, span, t, prec);
-    let origin = match (approx_center(&na), approx_center(&nb)) {
-        (Some(ca), Some(cb)) => std::array::from_fn(|i| {
+    let (origin, na, nb) = match (approx_center(&na), approx_center(&nb)) {
+        (Some(ca), Some(cb)) => {
             // The midpoint rounded to a multiple of 2^−10: an exact constant.
-            let v = ((ca[i] + cb[i]) * 512.0).round();
-            Rat::from_f64_exact(v)
-                .unwrap_or_else(Rat::zero)
-                .mul_pow2(-10)
-        }),
-        _ => std::array::from_fn(|_| Rat::zero()),
+            let origin: [Rat; 3] = std::array::from_fn(|i| {
+                let v = ((ca[i] + cb[i]) * 512.0).round();
+                Rat::from_f64_exact(v)
+                    .unwrap_or_else(Rat::zero)
+                    .mul_pow2(-10)
+            });
+            let s: [N; 3] = std::array::from_fn(|i| konst(&origin[i], prec));
+            (origin, shifted(na, &s), shifted(nb, &s))
+        }
+        _ => (std::array::from_fn(|_| Rat::zero()), na, nb),
     };
-    let s: [N; 3] = std::array::from_fn(|i| konst(&origin[i], prec));
-    let (na, nb) = (shifted(na, &s), shifted(nb, &s));
     (
         origin,
         congruence(&na, &body_diagonal(&konst_vec(&a.radii, prec))),
