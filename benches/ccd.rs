@@ -65,5 +65,31 @@ fn ccd(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, static_classification, ccd);
+/// What the contact point and normal add to a query (issue 14): the same
+/// queries with and without `contact_geometry`.
+fn geometry(c: &mut Criterion) {
+    let mut g = c.benchmark_group("contact geometry");
+    g.sample_size(30).measurement_time(Duration::from_secs(3));
+    for name in [
+        "tests/scenes/paper-example-5-1.toml",
+        "benches/scenes/affine-rational-deg2.toml",
+        "tests/stability/graze-ellipsoids-k08-overlap.toml",
+    ] {
+        let s = scene(name);
+        let name = name.rsplit('/').next().unwrap_or(name);
+        for geometry in [false, true] {
+            let o = Options {
+                contact_geometry: geometry,
+                ..Options::default()
+            };
+            let label = if geometry { "with" } else { "without" };
+            g.bench_function(format!("{name} total {label} geometry"), |bench| {
+                bench.iter(|| run(black_box(&s), &o).expect("runs"))
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, static_classification, ccd, geometry);
 criterion_main!(benches);

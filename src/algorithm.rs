@@ -2,6 +2,7 @@
 //! instant isolated with exact rational bounds and every state decided by
 //! exact signs.
 
+use crate::geometry::Bodies;
 use crate::signs::Coefficients;
 use crate::CcdError;
 use ccd_arith::{Int, Rat};
@@ -11,7 +12,7 @@ use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, RootIter, SignModel};
 use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
-use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
+use ccd_timeline::{Findings, Geometry, Instant, Outcome, State, Stats};
 
 /// How the roots and signs are computed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -35,6 +36,9 @@ pub struct Options {
     pub first_contact_only: bool,
     /// Exact (certified) or float.
     pub arithmetic: Arithmetic,
+    /// Compute the contact point and normal of each contact
+    /// ([`Outcome::geometry`]); `false` leaves it empty (default `true`).
+    pub contact_geometry: bool,
 }
 
 impl Default for Options {
@@ -43,6 +47,7 @@ impl Default for Options {
             digits: 15,
             first_contact_only: false,
             arithmetic: Arithmetic::Exact,
+            contact_geometry: true,
         }
     }
 }
@@ -151,8 +156,9 @@ fn candidates<'a>(
 }
 
 /// The contact instants among the roots `roots` yields, in order (up to
-/// the first with `first_contact_only`), refined to `width`; `None` if a
-/// filter-only isolation could not prove a sign before that point.
+/// the first with `first_contact_only`), refined to `width`, each with its
+/// contact geometry (crate::geometry); `None` if a filter-only isolation
+/// could not prove a sign before that point.
 fn contacts_at<M: SignModel + Clone>(
     mut roots: RootIter<M>,
     coefficients: &Coefficients,
@@ -160,17 +166,26 @@ fn contacts_at<M: SignModel + Clone>(
     width: &Rat,
     opts: &Options,
     stats: &mut Stats,
-) -> Result<Option<Vec<Instant>>, CcdError> {
+    bodies: &Bodies,
+) -> Result<Option<Vec<(Instant, Geometry)>>, CcdError> {
     let mut contacts = vec![];
     for mut root in roots.by_ref() {
         stats.candidates += 1;
         if touches_at(&mut root, coefficients, zeros) {
             root.refine_to(width);
-            contacts.push(Instant {
+            let instant = Instant {
                 lo: root.lo().clone(),
                 hi: root.hi().clone(),
                 certified: true,
-            });
+            };
+            let geometry = if opts.contact_geometry {
+                bodies.exact(&mut root, coefficients, zeros)
+            } else {
+                Geometry::Unknown {
+                    reason: "not asked for".into(),
+                }
+            };
+            contacts.push((instant, geometry));
             if opts.first_contact_only {
                 return Ok(Some(contacts));
             }
@@ -197,7 +212,8 @@ fn filtered_contacts(
     width: &Rat,
     opts: &Options,
     stats: &Stats,
-) -> Result<Option<(Vec<Instant>, Stats)>, CcdError> {
+    bodies: &Bodies,
+) -> Result<Option<(Vec<(Instant, Geometry)>, Stats)>, CcdError> {
     let sr0 = coefficients.model(Quantity::Sr0);
     if sr0.filtered_sign_at(&Rat::from_frac(1, 2)) == 0 {
         return Ok(None);
@@ -218,6 +234,7 @@ fn filtered_contacts(
         width,
         opts,
         &mut stats,
+        bodies,
     )?;
     Ok(contacts.map(|c| (c, stats)))
 }
@@ -229,11 +246,11 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         let float = ccd_float::Options {
             first_contact_only: opts.first_contact_only,
         };
-        return Ok(ccd_float::solve(
-            &CharPoly::from_placed(&a, &b),
-            &scene.span,
-            &float,
-        ));
+        let mut outcome = ccd_float::solve(&CharPoly::from_placed(&a, &b), &scene.span, &float);
+        if opts.contact_geometry {
+            outcome.geometry = crate::geometry::estimates(scene, &outcome);
+        }
+        return Ok(outcome);
     }
     let mut stats = Stats::default();
     // First contact only: the state at t0 straight from the placements, so
@@ -262,7 +279,8 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
         complete: true,
         certified: true,
     };
-    let contacts = match filtered_contacts(&f, &coefficients, &width, opts, &stats)? {
+    let bodies = Bodies::new(scene, &a, &b, opts);
+    let contacts = match filtered_contacts(&f, &coefficients, &width, opts, &stats, &bodies)? {
         Some((contacts, filtered_stats)) => {
             stats = filtered_stats;
             Some(contacts)
@@ -282,21 +300,34 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
                     stats.deg_candidates = poly.degree();
                     let roots = ccd_solver::isolate(poly, &Rat::zero(), &Rat::one())
                         .map_err(|e| CcdError::Internal(e.to_string()))?;
-                    let exact = contacts_at(roots, &coefficients, zeros, &width, opts, &mut stats)?;
+                    let exact = contacts_at(
+                        roots,
+                        &coefficients,
+                        zeros,
+                        &width,
+                        opts,
+                        &mut stats,
+                        &bodies,
+                    )?;
                     Some(exact.expect("exact isolation decides every sign"))
                 }
             }
         }
     };
+    let mut geometry = vec![];
     if let Some(contacts) = contacts {
         // First contact only: the timeline stops at the one found.
         found.complete = !opts.first_contact_only || contacts.is_empty();
-        found.contacts = contacts;
+        (found.contacts, geometry) = contacts.into_iter().unzip();
     }
-    found.into_outcome(&scene.span, stats, |u| match state_at(&f, u) {
+    let mut outcome = found.into_outcome(&scene.span, stats, |u| match state_at(&f, u) {
         State::Touch => Err(CcdError::Internal(format!(
             "touch at sample u = {u} between contacts"
         ))),
         state => Ok(state),
-    })
+    })?;
+    if opts.contact_geometry {
+        outcome.geometry = geometry;
+    }
+    Ok(outcome)
 }

@@ -1,6 +1,7 @@
 //! The `--json` result of the contract (`scene-format.md`, format 1).
 
-use ccd_timeline::{Instant, Outcome};
+use ccd_arith::Rat;
+use ccd_timeline::{Box3, Geometry, Instant, Outcome};
 use serde_json::{json, Value};
 
 /// Decimals of `approx`: 12, plus one per leading zero of the span's width.
@@ -18,6 +19,55 @@ fn instant(i: &Instant, digits: u32) -> Value {
     json!({"lo": i.lo.to_string(), "hi": i.hi.to_string(), "approx": i.approx(digits), "certified": i.certified})
 }
 
+/// Decimals for a box's `approx`: enough for its width (12 to 16), 16
+/// for a box of zero width (an exact point, or a float estimate).
+pub(crate) fn box_digits(b: &Box3) -> u32 {
+    let w = b.width().to_f64();
+    if w > 0.0 {
+        (-w.log10()).ceil().clamp(12.0, 16.0) as u32
+    } else {
+        16
+    }
+}
+
+fn boxed(b: &Box3, certified: bool) -> Value {
+    let d = box_digits(b);
+    let strings = |v: &[Rat; 3]| v.iter().map(Rat::to_string).collect::<Vec<_>>();
+    json!({"lo": strings(&b.lo), "hi": strings(&b.hi), "approx": b.approx(d), "certified": certified})
+}
+
+/// A contact's time object with its `point` and `normal` (null, with a
+/// `point_note`, when there is no single point).
+fn contact(i: &Instant, g: Option<&Geometry>, digits: u32) -> Value {
+    let mut v = instant(i, digits);
+    if let (Some(g), Some(obj)) = (g, v.as_object_mut()) {
+        match g {
+            Geometry::Point {
+                point,
+                normal,
+                certified,
+            } => {
+                obj.insert("point".into(), boxed(point, *certified));
+                obj.insert("normal".into(), boxed(normal, *certified));
+            }
+            Geometry::NotASinglePoint => {
+                obj.insert("point".into(), Value::Null);
+                obj.insert("normal".into(), Value::Null);
+                obj.insert("point_note".into(), "not a single point".into());
+            }
+            Geometry::Unknown { reason } => {
+                obj.insert("point".into(), Value::Null);
+                obj.insert("normal".into(), Value::Null);
+                obj.insert(
+                    "point_note".into(),
+                    format!("not computed: {reason}").into(),
+                );
+            }
+        }
+    }
+    v
+}
+
 /// The result as the contract's JSON object (plus `complete`, `certified`
 /// and `stats`, which consumers may ignore).
 pub fn to_json(outcome: &Outcome) -> Value {
@@ -27,8 +77,12 @@ pub fn to_json(outcome: &Outcome) -> Value {
         "format": 1,
         "span": [outcome.span[0].to_string(), outcome.span[1].to_string()],
         "collision_free": outcome.collision_free,
-        "first_contact": outcome.first_contact.as_ref().map(|i| instant(i, d)),
-        "contacts": outcome.contacts.iter().map(|i| instant(i, d)).collect::<Vec<_>>(),
+        "first_contact": outcome.first_contact.as_ref().map(|i| {
+            let k = outcome.contacts.iter().position(|c| c == i);
+            contact(i, k.and_then(|k| outcome.geometry.get(k)), d)
+        }),
+        "contacts": outcome.contacts.iter().enumerate()
+            .map(|(k, i)| contact(i, outcome.geometry.get(k), d)).collect::<Vec<_>>(),
         "timeline": outcome.timeline.iter().map(|seg| json!({
             "state": seg.state.name(),
             "start": instant(&seg.start, d),

@@ -34,12 +34,13 @@
 
 mod algorithm;
 mod error;
+mod geometry;
 mod json;
 mod signs;
 
 pub use algorithm::{symbolic, Arithmetic, Options};
 pub use ccd_scene::{Scene, SceneError};
-pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
+pub use ccd_timeline::{Box3, Geometry, Instant, Outcome, Segment, State, Stats};
 pub use error::CcdError;
 pub use json::to_json;
 
@@ -64,7 +65,12 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
         digits: options.digits,
         first_contact_only: options.first_contact_only,
     };
-    ccd_enclosure::run(&scene.a, &scene.b, &scene.span, &opts).map_err(CcdError::from)
+    let mut outcome =
+        ccd_enclosure::run(&scene.a, &scene.b, &scene.span, &opts).map_err(CcdError::from)?;
+    if options.contact_geometry {
+        outcome.geometry = geometry::helical(scene, &outcome, options);
+    }
+    Ok(outcome)
 }
 
 /// Parses a scene from TOML text and runs it.

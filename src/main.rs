@@ -1,6 +1,6 @@
-//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact]`
+//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--no-geometry]`
 
-use ccd_exact::{run_toml, to_json, Arithmetic, Options, Outcome};
+use ccd_exact::{run_toml, to_json, Arithmetic, Geometry, Options, Outcome};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -9,6 +9,7 @@ ccd-exact: exact, certified continuous collision detection for two moving ellips
 
 USAGE:
     ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--arithmetic exact|float]
+              [--no-geometry]
 
 OPTIONS:
     --json            print the result as JSON (scene-format.md, format 1)
@@ -16,6 +17,7 @@ OPTIONS:
     --first-contact   stop at the earliest instant the bodies are not separate
     --arithmetic M    exact (default: every answer certified) or float (the
                       paper's f64 Bernstein solver: faster, NOT certified)
+    --no-geometry     skip the contact point and normal of each contact
     -h, --help        this help
     -V, --version     the version
 
@@ -50,6 +52,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
             }
             "--json" => json = true,
             "--first-contact" => options.first_contact_only = true,
+            "--no-geometry" => options.contact_geometry = false,
             "--arithmetic" => {
                 options.arithmetic = match args.next().as_deref() {
                     Some("exact") => Arithmetic::Exact,
@@ -133,6 +136,30 @@ fn table(out: &Outcome) -> String {
             c.lo,
             c.hi
         );
+        match out.geometry.get(k) {
+            Some(Geometry::Point {
+                point,
+                normal,
+                certified,
+            }) => {
+                let mark = if *certified { "" } else { "  (NOT certified)" };
+                let show = |b: &ccd_exact::Box3| b.approx(12).join(", ");
+                let _ = writeln!(
+                    t,
+                    "    point  ≈ ({}){mark}  (box width {:.1e})\n    normal ≈ ({})  (A's outward normal, largest component ±1)",
+                    show(point),
+                    point.width().to_f64(),
+                    show(normal)
+                );
+            }
+            Some(Geometry::NotASinglePoint) => {
+                t.push_str("    point: not a single point\n");
+            }
+            Some(Geometry::Unknown { reason }) => {
+                let _ = writeln!(t, "    point: not computed ({reason})");
+            }
+            None => {}
+        }
     }
     match &out.first_contact {
         Some(fc) => {

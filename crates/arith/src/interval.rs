@@ -75,8 +75,12 @@ impl Interval {
             Interval { lo, hi }
         }
     }
-    /// A certified enclosure of a machine integer.
+    /// A certified enclosure of a machine integer (the point itself when
+    /// it is exact in `f64`).
     pub fn from_i64(v: i64) -> Interval {
+        if v.unsigned_abs() <= 1 << 53 {
+            return Interval::point(v as f64);
+        }
         Interval::from_int(&Int::from_i64(v))
     }
     /// A certified enclosure of an integer.
@@ -100,6 +104,7 @@ impl Interval {
         ];
         Interval::hull_widened(c)
     }
+    #[inline]
     fn hull_widened(c: [f64; 4]) -> Interval {
         if c.iter().any(|v| v.is_nan()) {
             return Interval::ENTIRE;
@@ -186,18 +191,21 @@ impl Interval {
 
 impl Add for Interval {
     type Output = Interval;
+    #[inline]
     fn add(self, o: Interval) -> Interval {
         Interval::new((self.lo + o.lo).next_down(), (self.hi + o.hi).next_up())
     }
 }
 impl Sub for Interval {
     type Output = Interval;
+    #[inline]
     fn sub(self, o: Interval) -> Interval {
         Interval::new((self.lo - o.hi).next_down(), (self.hi - o.lo).next_up())
     }
 }
 impl Neg for Interval {
     type Output = Interval;
+    #[inline]
     fn neg(self) -> Interval {
         Interval {
             lo: -self.hi,
@@ -207,6 +215,7 @@ impl Neg for Interval {
 }
 impl Mul for Interval {
     type Output = Interval;
+    #[inline]
     fn mul(self, o: Interval) -> Interval {
         let c = [
             self.lo * o.lo,
@@ -231,20 +240,24 @@ impl crate::RingOps for Interval {
         Interval::point(1.0)
     }
     fn from_i64(v: i64) -> Self {
-        Interval::from_int(&Int::from_i64(v))
+        Interval::from_i64(v)
     }
     fn is_zero(&self) -> bool {
         self.lo == 0.0 && self.hi == 0.0
     }
+    #[inline]
     fn plus(&self, o: &Self) -> Self {
         *self + *o
     }
+    #[inline]
     fn minus(&self, o: &Self) -> Self {
         *self - *o
     }
+    #[inline]
     fn times(&self, o: &Self) -> Self {
         *self * *o
     }
+    #[inline]
     fn negated(&self) -> Self {
         -*self
     }

@@ -73,7 +73,7 @@ pub mod trig;
 pub use dual::Dual;
 pub use dyadic::{BigInterval, Dyadic};
 pub use error::EnclosureError;
-pub use placement::{invariants_at, quadric_at};
+pub use placement::{centred_quadrics, invariants_at, quadric_at};
 pub use real::Real;
 pub use run::{run, Options};
 pub use trig::{sin_cos, Trig};

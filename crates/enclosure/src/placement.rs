@@ -265,23 +265,39 @@ fn quadrics_centred<N: Trig>(
     t: &N,
     prec: u32,
 ) -> (Mat4<N>, Mat4<N>) {
+    let (_, qa, qb) = centred_quadrics(a, b, span, t, prec);
+    (qa, qb)
+}
+
+/// The quadric matrices of both bodies in the world frame whose origin is
+/// moved to the returned dyadic point `s` between them (a world point `X`
+/// has coordinates `X − s` there), enclosed in `N` at the time `t`: the
+/// frame [`characteristic_at`] uses, also for points (add `s` back).
+pub fn centred_quadrics<N: Trig>(
+    a: &Body,
+    b: &Body,
+    span: &[Rat; 2],
+    t: &N,
+    prec: u32,
+) -> ([Rat; 3], Mat4<N>, Mat4<N>) {
     let na = inverse_placement(&a.motion, span, t, prec);
     let nb = inverse_placement(&b.motion, span, t, prec);
-    let (na, nb) = match (approx_center(&na), approx_center(&nb)) {
+    let (origin, na, nb) = match (approx_center(&na), approx_center(&nb)) {
         (Some(ca), Some(cb)) => {
             // The midpoint rounded to a multiple of 2^−10: an exact constant.
-            let s: [N; 3] = std::array::from_fn(|i| {
+            let origin: [Rat; 3] = std::array::from_fn(|i| {
                 let v = ((ca[i] + cb[i]) * 512.0).round();
-                let q = Rat::from_f64_exact(v)
+                Rat::from_f64_exact(v)
                     .unwrap_or_else(Rat::zero)
-                    .mul_pow2(-10);
-                konst(&q, prec)
+                    .mul_pow2(-10)
             });
-            (shifted(na, &s), shifted(nb, &s))
+            let s: [N; 3] = std::array::from_fn(|i| konst(&origin[i], prec));
+            (origin, shifted(na, &s), shifted(nb, &s))
         }
-        _ => (na, nb),
+        _ => (std::array::from_fn(|_| Rat::zero()), na, nb),
     };
     (
+        origin,
         congruence(&na, &body_diagonal(&konst_vec(&a.radii, prec))),
         congruence(&nb, &body_diagonal(&konst_vec(&b.radii, prec))),
     )

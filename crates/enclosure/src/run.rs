@@ -604,5 +604,6 @@ pub fn run(
         timeline,
         complete,
         stats,
+        geometry: Vec::new(),
     })
 }

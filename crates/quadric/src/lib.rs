@@ -12,7 +12,8 @@ mod placement;
 pub use ccd_subres::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
 pub use matrix::{
-    adj3, characteristic, congruence, det3, det4, integral, placed_characteristic, Mat3, Mat4,
+    adj3, adj4, adj4_column, characteristic, congruence, det3, det4, integral,
+    placed_characteristic, Mat3, Mat4,
 };
 pub use placement::{
     affine_inverse, affine_placement, body_diagonal, norm2, rigid_inverse, rigid_placement,

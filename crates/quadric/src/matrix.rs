@@ -127,6 +127,33 @@ pub fn adj3<R: RingOps>(m: &Mat3<R>) -> Mat3<R> {
     ]
 }
 
+/// Column `j` of the adjugate of a 4×4 matrix: `adj(M)[i][j] =
+/// (−1)^(i+j)·minor(j, i)`, so `M·adj(M) = det(M)·I`. When `M` has rank 3
+/// every column is a multiple of the kernel vector (the contact point of
+/// Wang et al. 2001 for `M = λ*A + B`).
+pub fn adj4_column<R: RingOps>(m: &Mat4<R>, j: usize) -> [R; 4] {
+    std::array::from_fn(|i| {
+        // minor(j, i): delete row j and column i.
+        let rows: [usize; 3] = std::array::from_fn(|r| if r < j { r } else { r + 1 });
+        let cols: [usize; 3] = std::array::from_fn(|c| if c < i { c } else { c + 1 });
+        let sub: Mat3<R> =
+            std::array::from_fn(|r| std::array::from_fn(|c| m[rows[r]][cols[c]].clone()));
+        let minor = det3(&sub);
+        if (i + j) % 2 == 0 {
+            minor
+        } else {
+            minor.negated()
+        }
+    })
+}
+
+/// The adjugate of a 4×4 matrix (`M·adj(M) = det(M)·I`), by columns
+/// ([`adj4_column`]).
+pub fn adj4<R: RingOps>(m: &Mat4<R>) -> Mat4<R> {
+    let cols: [[R; 4]; 4] = std::array::from_fn(|j| adj4_column(m, j));
+    std::array::from_fn(|i| std::array::from_fn(|j| cols[j][i].clone()))
+}
+
 /// The coefficients `[e, a, b, c, d]` (high → low) of the characteristic
 /// quartic `det(λA + B) = e·λ⁴ + a·λ³ + b·λ² + c·λ + d` (Section 2).
 ///
@@ -311,25 +338,6 @@ mod tests {
         total
     }
 
-    /// The 4×4 adjugate by cofactors (test reference).
-    fn adj4(m: &Mat4<Int>) -> Mat4<Int> {
-        std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                // adj[i][j] = (−1)^(i+j)·minor(j, i)
-                let rows: Vec<usize> = (0..4).filter(|&r| r != j).collect();
-                let cols: Vec<usize> = (0..4).filter(|&c| c != i).collect();
-                let sub: Mat3<Int> =
-                    std::array::from_fn(|r| std::array::from_fn(|c| m[rows[r]][cols[c]].clone()));
-                let minor = det3(&sub);
-                if (i + j) % 2 == 0 {
-                    minor
-                } else {
-                    -minor
-                }
-            })
-        })
-    }
-
     proptest! {
         #[test]
         fn det4_matches_permutation_expansion(v in proptest::collection::vec(-9i64..10, 16)) {
@@ -364,6 +372,18 @@ mod tests {
             for k in 0..5u32 {
                 let (x, y) = (&adjugate[4 - k as usize], &plucker[4 - k as usize]);
                 prop_assert_eq!(x * &sa.pow(2) * &sb.pow(2 * k + 2), y * &sb.pow(8) * &sa.pow(2 * k));
+            }
+        }
+
+        #[test]
+        fn adj4_inverts(v in proptest::collection::vec(-9i64..10, 16)) {
+            let m = mat(&v);
+            let (adj, d) = (adj4(&m), det4(&m));
+            for (i, row) in m.iter().enumerate() {
+                for j in 0..4 {
+                    let s = row.iter().zip(&adj).fold(Int::zero(), |acc, (x, a)| acc + x * &a[j]);
+                    prop_assert_eq!(s, if i == j { d.clone() } else { Int::zero() });
+                }
             }
         }
 

@@ -75,6 +75,74 @@ impl Instant {
     }
 }
 
+/// A box `lo <= x <= hi` (componentwise) in world coordinates with exact
+/// rational ends: a certified enclosure of a point or a vector when the
+/// [`Geometry`] holding it says so.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Box3 {
+    /// Lower ends.
+    pub lo: [Rat; 3],
+    /// Upper ends.
+    pub hi: [Rat; 3],
+}
+
+impl Box3 {
+    /// The box holding exactly the point `x`.
+    pub fn point(x: [Rat; 3]) -> Box3 {
+        Box3 {
+            lo: x.clone(),
+            hi: x,
+        }
+    }
+    /// The midpoint of each coordinate.
+    pub fn midpoint(&self) -> [Rat; 3] {
+        std::array::from_fn(|i| Rat::midpoint(&self.lo[i], &self.hi[i]))
+    }
+    /// The largest width `hi − lo` over the three coordinates.
+    pub fn width(&self) -> Rat {
+        (0..3)
+            .map(|i| &self.hi[i] - &self.lo[i])
+            .max()
+            .unwrap_or_else(Rat::zero)
+    }
+    /// The midpoint's coordinates as decimal strings with `digits` decimals.
+    pub fn approx(&self, digits: u32) -> [String; 3] {
+        self.midpoint().map(|x| x.to_decimal(digits))
+    }
+}
+
+/// Where and in which direction the bodies touch at an isolated contact
+/// instant `t*`: the kernel of `λ*·A(t*) + B(t*)` for the positive double
+/// root `λ*` of `f(λ; t*) = det(λA(t*) + B(t*))` (Wang et al. 2001).
+// The large variant is the usual one (a point per contact): boxing it
+// would add an allocation to every contact to shrink the rare others.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Geometry {
+    /// The contact point and `A`'s outward normal there (pointing into
+    /// `B`), scaled so that its component of largest magnitude is `±1`.
+    Point {
+        /// Encloses the contact point (world coordinates).
+        point: Box3,
+        /// Encloses the normal, `∇(XᵀA X)` at the point divided by the
+        /// magnitude of its largest component (that component is exactly
+        /// `±1`).
+        normal: Box3,
+        /// Whether both boxes are proven to hold the true point and normal
+        /// (never, in float mode: there they are `f64` values, `lo == hi`).
+        certified: bool,
+    },
+    /// The kernel of `λ*·A(t*) + B(t*)` was not found one-dimensional: every
+    /// enclosure of the adjugate's last column holds 0 at the highest
+    /// precision tried (the bodies may touch along a curve).
+    NotASinglePoint,
+    /// No point could be computed within the effort bound.
+    Unknown {
+        /// Why.
+        reason: String,
+    },
+}
+
 /// A maximal piece of the span with one state; an isolated contact instant
 /// is a `Touch` segment whose start and end are the same instant.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -124,6 +192,9 @@ pub struct Outcome {
     pub complete: bool,
     /// Degrees and counters.
     pub stats: Stats,
+    /// The contact point and normal of each entry of `contacts`, in the
+    /// same order (empty when not computed).
+    pub geometry: Vec<Geometry>,
 }
 
 /// What a solver found on the normalised span `u ∈ [0, 1]`
@@ -246,6 +317,7 @@ impl Findings {
             complete,
             span: span.clone(),
             stats,
+            geometry: Vec::new(),
         })
     }
 }
