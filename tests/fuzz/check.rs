@@ -4,7 +4,7 @@
 //! rational instants inside its segments.
 
 use crate::common::static_state;
-use ccd_arith::Rat;
+use ccd_arith::{Int, Rat};
 use ccd_exact::{Scene, State};
 use ccd_motion::Motion;
 use serde_json::Value;
@@ -42,9 +42,43 @@ struct Run {
     stderr: String,
 }
 
-/// Runs the binary on `path` with `args`, killing it after `bound` (with a
-/// stack sample first when gdb is at hand).
-fn run(path: &Path, args: &[&str], bound: Duration) -> Result<Run, Failure> {
+/// Seconds of CPU time the process `pid` has used (user + system, from
+/// `/proc/PID/stat`, in the kernel's fixed USER_HZ = 100 ticks per second);
+/// `None` where there is no `/proc`.
+fn cpu_seconds(pid: u32) -> Option<f64> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    // The command name, in parentheses, may hold spaces: fields after it.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    let ticks = |i: usize| fields.get(i)?.parse::<u64>().ok();
+    Some((ticks(11)? + ticks(12)?) as f64 / 100.0)
+}
+
+/// How long a run of the binary may take before it counts as a hang: `cpu`
+/// seconds of its own CPU time (so a machine loaded by other builds does
+/// not turn a slow answer into a false hang), and `WALL_FACTOR` times that
+/// in wall-clock time in any case (a child that blocks, or no `/proc`).
+#[derive(Clone, Copy, Debug)]
+pub struct Bound {
+    /// CPU seconds of the child.
+    pub cpu: f64,
+}
+
+/// The wall-clock backstop, as a multiple of the CPU bound.
+const WALL_FACTOR: u32 = 5;
+
+impl Bound {
+    /// `self` scaled by `k` (slow regressions).
+    pub fn times(self, k: f64) -> Bound {
+        Bound { cpu: self.cpu * k }
+    }
+    fn wall(self) -> Duration {
+        Duration::from_secs_f64(self.cpu) * WALL_FACTOR
+    }
+}
+
+/// Runs the binary on `path` with `args`, killing it once it passes
+/// `bound` (with a stack sample first when gdb is at hand).
+fn run(path: &Path, args: &[&str], bound: Bound) -> Result<Run, Failure> {
     let mut child = Command::new(env!("CARGO_BIN_EXE_ccd-exact"))
         .arg(path)
         .args(args)
@@ -66,16 +100,22 @@ fn run(path: &Path, args: &[&str], bound: Duration) -> Result<Run, Failure> {
     let status = loop {
         match child.try_wait() {
             Ok(Some(status)) => break status,
-            Ok(None) if start.elapsed() < bound => std::thread::sleep(Duration::from_millis(5)),
             Ok(None) => {
+                let cpu = cpu_seconds(child.id()).unwrap_or(0.0);
+                if cpu <= bound.cpu && start.elapsed() <= bound.wall() {
+                    std::thread::sleep(Duration::from_millis(5));
+                    continue;
+                }
                 let stack = stack_sample(child.id());
                 let _ = child.kill();
                 let _ = child.wait();
                 return Err(format!(
-                    "no answer within {:?} (`ccd-exact {} {}` killed; the bound is a hang detector, not a speed target){stack}",
-                    bound,
+                    "no answer within the bound of {} s CPU / {:?} wall (`ccd-exact {} {}` killed after {cpu:.1} s CPU, {:.1?} wall; the bound is a hang detector, not a speed target){stack}",
+                    bound.cpu,
+                    bound.wall(),
                     path.display(),
-                    args.join(" ")
+                    args.join(" "),
+                    start.elapsed()
                 ));
             }
             Err(e) => return Err(format!("cannot wait for the binary: {e}")),
@@ -180,10 +220,20 @@ struct Segment {
     end: Time,
 }
 
+/// An exact rational `p/q` or `p` of the result. Not through the scene
+/// parser: an output number may be longer than the input limit (a span
+/// `[0, 1e-4096]` has an end of 4098 characters).
 fn rat(v: &Value, what: &str) -> Result<Rat, Failure> {
-    v.as_str()
-        .and_then(|s| s.parse().ok())
-        .ok_or_else(|| format!("JSON: {what} is not an exact rational: {v}"))
+    let read = |s: &str| {
+        let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+        Rat::new(Int::parse_decimal(p)?, Int::parse_decimal(q)?)
+    };
+    v.as_str().and_then(read).ok_or_else(|| {
+        format!(
+            "JSON: {what} is not an exact rational: {}",
+            cut(&v.to_string(), 200)
+        )
+    })
 }
 
 fn time(v: &Value) -> Result<Time, Failure> {
@@ -309,7 +359,8 @@ fn instants(
     out
 }
 
-/// A scratch file for scene text `k` of this process.
+/// A scratch file named `k` of this process, rewritten for each scene (a
+/// failing scene is kept apart by the caller).
 pub fn scratch(k: &str) -> PathBuf {
     let dir =
         PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("fuzz-{}", std::process::id()));
@@ -323,7 +374,7 @@ pub fn check(
     text: &str,
     path: &Path,
     runs: Runs,
-    bound: Duration,
+    bound: Bound,
     pick: &mut dyn FnMut(usize) -> usize,
 ) -> Result<Verdict, Failure> {
     std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
@@ -392,11 +443,12 @@ pub fn check(
         }
         let _ = tx.send(Ok(()));
     });
-    match rx.recv_timeout(bound) {
+    match rx.recv_timeout(bound.wall()) {
         Ok(r) => r.map(|()| Verdict::Answered { compared }),
-        Err(mpsc::RecvTimeoutError::Timeout) => {
-            Err(format!("the static classifier took over {bound:?}"))
-        }
+        Err(mpsc::RecvTimeoutError::Timeout) => Err(format!(
+            "the static classifier took over {:?}",
+            bound.wall()
+        )),
         Err(mpsc::RecvTimeoutError::Disconnected) => Err("the static classifier panicked".into()),
     }
 }

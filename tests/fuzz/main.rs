@@ -5,8 +5,9 @@
 //! a benchmark of minutes) and `tests/stability/*.toml`. Each mutant (see
 //! [`mutate`]) goes through the `ccd-exact` binary and must
 //!
-//! * answer within the bound (the child is killed after it, with a gdb stack
-//!   sample when gdb is installed): a hang detector, not a speed target;
+//! * answer within the bound (CPU seconds of the child, with a wall-clock
+//!   backstop of 5×; the child is killed after it, with a gdb stack sample
+//!   when gdb is installed): a hang detector, not a speed target;
 //! * exit with status 0 or 2, never panic, and name the field on exit 2;
 //! * when it answers, give a timeline that follows the JSON contract and
 //!   agrees with the static classifier (Theorem 3.10, computed here from
@@ -24,8 +25,8 @@
 //! * `CCD_FUZZ_SECONDS`: keep making mutants until this many seconds have
 //!   passed (the last one started is finished); also replays the slow
 //!   regressions.
-//! * `CCD_FUZZ_BOUND` (default 20): seconds per run of the binary before it
-//!   counts as a hang.
+//! * `CCD_FUZZ_BOUND` (default 20): CPU seconds per run of the binary
+//!   before it counts as a hang (and 5× that in wall-clock time).
 //! * `CCD_FUZZ_SLOW=1`: replay `tests/fuzz-regressions/slow/` too (bound ×
 //!   6).
 //! * `CCD_FUZZ_GDB=0`: no stack sample on a hang.
@@ -42,7 +43,7 @@ mod check;
 mod mutate;
 mod rng;
 
-use check::{check, cut, scratch, Failure, Runs, Verdict};
+use check::{check, cut, scratch, Bound, Failure, Runs, Verdict};
 use rng::Rng;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -52,7 +53,7 @@ struct Config {
     seed: u64,
     cases: Option<u64>,
     seconds: Option<f64>,
-    bound: Duration,
+    bound: Bound,
     slow: bool,
 }
 
@@ -73,7 +74,9 @@ fn config() -> Config {
         seed: env("CCD_FUZZ_SEED").unwrap_or(12),
         cases,
         seconds,
-        bound: Duration::from_secs_f64(env("CCD_FUZZ_BOUND").unwrap_or(20.0)),
+        bound: Bound {
+            cpu: env("CCD_FUZZ_BOUND").unwrap_or(20.0),
+        },
         slow: env::<u8>("CCD_FUZZ_SLOW") == Some(1) || seconds.is_some(),
     }
 }
@@ -115,7 +118,8 @@ fn report(label: &str, text: &str, why: &Failure) -> String {
     let file = dir.join(format!("{}.toml", label.replace(['/', ' '], "_")));
     let _ = std::fs::write(&file, text);
     format!(
-        "=== {label}: {why}\n--- scene (also in {}):\n{}\n",
+        "=== {label}: {}\n--- scene (also in {}):\n{}\n",
+        cut(why, 6000),
         file.display(),
         cut(text, 4000)
     )
@@ -168,7 +172,7 @@ fn mutants_of_the_shipped_scenes() {
         };
         let label = format!("seed-{}-case-{case}", cfg.seed);
         let t = Instant::now();
-        match check(&m.text, &scratch(&label), runs, cfg.bound, &mut |n| {
+        match check(&m.text, &scratch("mutant"), runs, cfg.bound, &mut |n| {
             rng.below(n)
         }) {
             Ok(v) => tally.add(v, t.elapsed(), &label),
@@ -205,7 +209,7 @@ fn mutants_of_the_shipped_scenes() {
 }
 
 /// Replays the scenes of `dir` with every run, bounded by `bound`.
-fn replay(dir: &str, bound: Duration) {
+fn replay(dir: &str, bound: Bound) {
     let scenes = scenes_in(&root().join(dir));
     assert!(!scenes.is_empty(), "no regression scenes in {dir}");
     let mut failures = Vec::new();
@@ -222,7 +226,7 @@ fn replay(dir: &str, bound: Duration) {
         let t = Instant::now();
         match check(
             &text,
-            &scratch(&format!("replay-{name}")),
+            &scratch(&format!("replay-{}", dir.replace('/', "-"))),
             runs,
             bound,
             &mut |n| rng.below(n),
@@ -251,6 +255,6 @@ fn regressions_stay_fixed() {
     let cfg = config();
     replay("tests/fuzz-regressions", cfg.bound);
     if cfg.slow {
-        replay("tests/fuzz-regressions/slow", cfg.bound * 6);
+        replay("tests/fuzz-regressions/slow", cfg.bound.times(6.0));
     }
 }
