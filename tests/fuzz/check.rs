@@ -452,3 +452,81 @@ pub fn check(
         Err(mpsc::RecvTimeoutError::Disconnected) => Err("the static classifier panicked".into()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn t(lo: &str, hi: &str) -> Value {
+        json!({"lo": lo, "hi": hi, "approx": "", "certified": true})
+    }
+
+    /// A well-formed result: separate, touch at 1/2, separate.
+    fn good() -> Value {
+        json!({
+            "span": ["0", "1"],
+            "collision_free": false,
+            "complete": true,
+            "first_contact": t("1/3", "2/3"),
+            "contacts": [t("1/3", "2/3")],
+            "timeline": [
+                {"state": "separate", "start": t("0", "0"), "end": t("1/3", "2/3")},
+                {"state": "touch", "start": t("1/3", "2/3"), "end": t("1/3", "2/3")},
+                {"state": "separate", "start": t("1/3", "2/3"), "end": t("1", "1")},
+            ],
+        })
+    }
+
+    #[test]
+    fn the_contract_checks_can_fail() {
+        assert!(timeline(&good()).is_ok());
+        type Breaks = fn(&mut Value);
+        let broken: [(&str, Breaks); 6] = [
+            ("gap", |v| v["timeline"][2]["start"] = t("1/2", "2/3")),
+            ("short", |v| v["timeline"][2]["end"] = t("0", "1")),
+            ("late start", |v| {
+                v["timeline"][0]["start"] = t("1/9", "1/9")
+            }),
+            ("contacts", |v| v["contacts"] = json!([])),
+            ("free", |v| v["collision_free"] = json!(true)),
+            ("state", |v| v["timeline"][0]["state"] = json!("apart")),
+        ];
+        for (name, breaks) in broken {
+            let mut v = good();
+            breaks(&mut v);
+            assert!(timeline(&v).is_err(), "{name} not caught");
+        }
+        // An uncertified end need only contain t1.
+        let mut v = good();
+        v["timeline"][2]["end"] = json!({"lo": "3/4", "hi": "1", "certified": false});
+        assert!(timeline(&v).is_ok());
+    }
+
+    #[test]
+    fn instants_lie_strictly_inside_segments() {
+        let (_, segs) = timeline(&good()).unwrap();
+        let mut k = 0;
+        let got = instants(&segs, 8, &mut |n| {
+            k += 1;
+            k % n
+        });
+        assert_eq!(got.len(), 4, "two open segments, two instants each");
+        for (at, state) in got {
+            assert_eq!(state, State::Separate);
+            assert!(
+                (Rat::zero() < at && at < Rat::from_frac(1, 3))
+                    || (Rat::from_frac(2, 3) < at && at < Rat::one()),
+                "{at}"
+            );
+        }
+    }
+
+    #[test]
+    fn long_output_rationals_are_read() {
+        let long = format!("1/{}", "1".repeat(5000));
+        assert!(rat(&json!(long), "x").is_ok());
+        assert!(rat(&json!("1/0"), "x").is_err());
+        assert!(rat(&json!("x"), "x").is_err());
+    }
+}
