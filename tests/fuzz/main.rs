@@ -179,7 +179,7 @@ fn mutants_of_the_shipped_scenes() {
             Err(why) => failures.push(report(
                 &label,
                 &m.text,
-                &format!("{why}\n(mutant of {name} by {:?})", m.ops),
+                &format!("mutant of {name} by {:?}: {why}", m.ops),
             )),
         }
         case += 1;

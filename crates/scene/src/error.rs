@@ -143,7 +143,7 @@ pub enum SceneError {
         field: String,
     },
     /// A radius or weight that is not `> 0`.
-    #[error("field `{field}`: must be > 0, found {value}")]
+    #[error("field `{field}`: must be > 0, found {}", shown(.value))]
     NonPositive {
         /// Path of the number.
         field: String,
@@ -151,7 +151,7 @@ pub enum SceneError {
         value: Rat,
     },
     /// `span = [t0, t1]` with `t0 >= t1`.
-    #[error("field `span`: t0 = {t0} must be less than t1 = {t1}")]
+    #[error("field `span`: t0 = {} must be less than t1 = {}", shown(.t0), shown(.t1))]
     Span {
         /// Start of the span (boxed to keep the error small).
         t0: Box<Rat>,
@@ -190,7 +190,7 @@ pub enum SceneError {
         limit: Limit,
     },
     /// `format` is not 1.
-    #[error("field `format`: unsupported format {found} (only format 1 exists)")]
+    #[error("field `format`: unsupported format {} (only format 1 exists)", shown(.found))]
     UnsupportedFormat {
         /// The format number found.
         found: Rat,
@@ -257,4 +257,10 @@ impl FieldPath {
     pub(crate) fn to_field(&self) -> String {
         self.0.clone()
     }
+}
+
+/// A value from the file as a message shows it: cut by [`excerpt`] (a
+/// number may have thousands of digits).
+fn shown(value: &Rat) -> String {
+    excerpt(&value.to_string())
 }

@@ -380,3 +380,26 @@ fn a_long_bad_number_is_quoted_cut() {
     );
     assert!(e.to_string().len() < 300, "{e}");
 }
+
+/// Values from the file in messages are cut too: a radius, a span end or a
+/// format can have thousands of digits.
+#[test]
+fn huge_values_in_messages_are_cut() {
+    let huge = "\"-1e4000\"";
+    for (text, field) in [
+        (a_body(&format!("radii = [1, {huge}, 1]")), "a.radii[1]"),
+        (
+            format!("span = [\"1e4000\", 1]\n[a]\nradii = [1, 1, 1]\n{B}"),
+            "span",
+        ),
+        (
+            format!("format = \"1e4000\"\n[a]\nradii = [1, 1, 1]\n{B}"),
+            "format",
+        ),
+    ] {
+        let e = Scene::from_toml(&text).unwrap_err();
+        assert_eq!(e.field(), Some(field));
+        let shown = e.to_string();
+        assert!(shown.len() < 300 && shown.contains('…'), "{shown}");
+    }
+}
