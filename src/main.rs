@@ -1,6 +1,7 @@
 //! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--no-geometry]`
 
 use ccd_exact::{run_toml, to_json, Arithmetic, Geometry, Options, Outcome};
+use ccd_scene::{Limit, SceneError, MAX_INPUT_BYTES};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -183,6 +184,27 @@ fn table(out: &Outcome) -> String {
     t
 }
 
+/// The text of the scene file at `path`, reading at most
+/// [`MAX_INPUT_BYTES`] + 1 bytes: a longer file (or `/dev/zero`) is refused
+/// with the scene format's size error, never read whole.
+fn read_scene(path: &str) -> Result<String, String> {
+    use std::io::Read;
+    let cannot = |e: &dyn std::fmt::Display| format!("cannot read `{path}`: {e}");
+    let file = std::fs::File::open(path).map_err(|e| cannot(&e))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| cannot(&e))?;
+    if bytes.len() > MAX_INPUT_BYTES {
+        let e = SceneError::TooLarge {
+            field: "<file>".into(),
+            limit: Limit::InputBytes,
+        };
+        return Err(format!("{path}: {e}"));
+    }
+    String::from_utf8(bytes).map_err(|e| cannot(&e))
+}
+
 fn main() -> ExitCode {
     let args = match parse_args(std::env::args().skip(1)) {
         Ok(Some(a)) => a,
@@ -195,10 +217,10 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let text = match std::fs::read_to_string(&args.path) {
+    let text = match read_scene(&args.path) {
         Ok(t) => t,
         Err(e) => {
-            eprintln!("ccd-exact: cannot read `{}`: {e}", args.path);
+            eprintln!("ccd-exact: {e}");
             return ExitCode::from(2);
         }
     };

@@ -173,3 +173,88 @@ fn float_mode_says_it_is_not_certified() {
         Some(2)
     );
 }
+
+/// Runs the binary on `text` written to a scratch file; returns the exit
+/// code and stderr.
+fn cli_on(name: &str, text: &str) -> (Option<i32>, String) {
+    let out = cli(&[&temp_scene(name, text)]);
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn an_endless_file_is_refused_at_the_input_limit() {
+    let limit = ccd_scene::MAX_INPUT_BYTES;
+    // /dev/zero never ends: only the bounded read stops it.
+    if std::path::Path::new("/dev/zero").exists() {
+        let out = cli(&["/dev/zero"]);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("field `<file>`") && err.contains(&limit.to_string()),
+            "{err}"
+        );
+    }
+    // One byte over the limit is refused, at the limit is read (and parsed).
+    let scene = "[a]\nradii = [1, 1, 1]\n[b]\nradii = [1, 1, 1]\n#";
+    let at = format!("{scene}{}", "#".repeat(limit - scene.len()));
+    let (code, err) = cli_on("at-limit.toml", &at);
+    assert_eq!(code, Some(0), "{err}");
+    let (code, err) = cli_on("over-limit.toml", &format!("{at}#"));
+    assert_eq!(code, Some(2));
+    assert!(err.contains("field `<file>`: too large"), "{err}");
+    assert!(err.contains(&format!("at most {limit} bytes")), "{err}");
+}
+
+#[test]
+fn input_edges_exit_2_naming_the_field() {
+    let b = "[b]\nradii = [1, 1, 1]\n";
+    let key = "k".repeat(500_000);
+    let cases = [
+        (
+            "exp.toml",
+            format!("[a]\nradii = [1, \"1e8192\", 1]\n{b}"),
+            "a.radii[1]",
+        ),
+        (
+            "ws.toml",
+            format!("[a]\nradii = [\" 2 \", 1, 1]\n{b}"),
+            "a.radii[0]",
+        ),
+        (
+            "slash.toml",
+            format!("[a]\nradii = [1, 1, \"1 / 2\"]\n{b}"),
+            "a.radii[2]",
+        ),
+        (
+            "key.toml",
+            format!("[a]\nradii = [1, 1, 1]\n{key} = 1\n{b}"),
+            "a.\"kkkk",
+        ),
+        (
+            "utf8.toml",
+            format!("[a]\nradii = [1, 1, 1]\n{b}\u{0}\u{ff}"),
+            "TOML",
+        ),
+    ];
+    for (name, text, needle) in &cases {
+        let (code, err) = cli_on(name, text);
+        assert_eq!(code, Some(2), "{name}: {err}");
+        assert!(err.contains(needle), "{name}: {err}");
+        assert!(err.len() < 1000, "{name}: message of {} bytes", err.len());
+    }
+    // Not UTF-8 at all.
+    let path = temp_scene("latin1.toml", "");
+    std::fs::write(&path, b"[a]\nradii = [1, 1, 1]\n# \xff\n").unwrap();
+    let out = cli(&[&path]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read"));
+    // A leading `+` is a sign, and 1e4096 is within the limit.
+    let (code, err) = cli_on(
+        "plus.toml",
+        &format!("[a]\nradii = [\"+2\", +1, \"1e4096\"]\n{b}"),
+    );
+    assert_eq!(code, Some(0), "{err}");
+}

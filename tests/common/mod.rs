@@ -4,10 +4,13 @@
 
 #![allow(dead_code)]
 
-use ccd_arith::Rat;
+use ccd_arith::{Int, Rat};
 use ccd_exact::{Outcome, Scene, State};
 use ccd_motion::{Bezier, Body, Motion};
-use ccd_quadric::{classify_pair, Configuration, Ellipsoid};
+use ccd_quadric::{
+    affine_inverse, body_diagonal, characteristic, classify_quartic, congruence, integral,
+    Configuration, Ellipsoid, Mat4,
+};
 
 /// De Casteljau at `u` over ℚ, coordinate-wise, with optional weights.
 pub fn eval_bezier<const N: usize>(c: &Bezier<[Rat; N]>, u: &Rat) -> [Rat; N] {
@@ -79,9 +82,41 @@ pub const PASS_THROUGH: [State; 5] = [
     State::Separate,
 ];
 
-/// The static classifier's answer for the scene at parameter `u ∈ [0, 1]`.
+/// The quadric matrix of `body` placed at parameter `u` (up to a positive
+/// factor), for every rational kind: through [`placed`] for the rigid kinds,
+/// through the inverse of `[L | d]` evaluated by de Casteljau for affine.
+pub fn quadric_at(body: &Body, u: &Rat) -> Mat4<Rat> {
+    match &body.motion {
+        Motion::Affine { matrix } => {
+            let flat: Bezier<[Rat; 12]> = Bezier {
+                points: matrix
+                    .points
+                    .iter()
+                    .map(|m| std::array::from_fn(|i| m[i / 4][i % 4].clone()))
+                    .collect(),
+                weights: matrix.weights.clone(),
+            };
+            let e = eval_bezier(&flat, u);
+            let l: [[Rat; 3]; 3] =
+                std::array::from_fn(|r| std::array::from_fn(|k| e[4 * r + k].clone()));
+            let d: [Rat; 3] = std::array::from_fn(|r| e[4 * r + 3].clone());
+            congruence(
+                &affine_inverse(&l, &d, &Rat::one()),
+                &body_diagonal(&body.radii),
+            )
+        }
+        _ => placed(body, u).quadric_matrix(),
+    }
+}
+
+/// The static classifier's answer for the scene at parameter `u ∈ [0, 1]`
+/// (rational kinds only).
 pub fn static_state(scene: &Scene, u: &Rat) -> State {
-    match classify_pair(&placed(&scene.a, u), &placed(&scene.b, u)) {
+    let f = characteristic(
+        &integral(&quadric_at(&scene.a, u)),
+        &integral(&quadric_at(&scene.b, u)),
+    );
+    match classify_quartic(&f, Int::signum) {
         Configuration::Separate => State::Separate,
         Configuration::ExternalTouch => State::Touch,
         Configuration::Overlap => State::Overlap,

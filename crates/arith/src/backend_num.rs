@@ -142,33 +142,6 @@ fn lehmer_gcd(mut a: BigUint, mut b: BigUint) -> BigUint {
     BigUint::from(x)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use proptest::prelude::*;
-
-    fn big(limbs: &[u64]) -> BigUint {
-        limbs
-            .iter()
-            .fold(BigUint::zero(), |acc, &l| (acc << 64u32) + BigUint::from(l))
-    }
-
-    proptest! {
-        /// Lehmer's gcd equals the binary gcd of num-bigint, on numbers
-        /// built with a large common factor and on unrelated ones.
-        #[test]
-        fn lehmer_matches_binary_gcd(
-            a in proptest::collection::vec(any::<u64>(), 0..12),
-            b in proptest::collection::vec(any::<u64>(), 0..12),
-            g in proptest::collection::vec(any::<u64>(), 0..6),
-        ) {
-            let (a, b, g) = (big(&a), big(&b), big(&g));
-            for (x, y) in [(a.clone(), b.clone()), (&a * &g, &b * &g), (a.clone() * &g, g.clone())] {
-                prop_assert_eq!(lehmer_gcd(x.clone(), y.clone()), x.gcd(&y));
-            }
-        }
-    }
-}
 #[inline]
 pub(crate) fn shl(a: &Inner, k: u64) -> Inner {
     a << k
@@ -221,4 +194,32 @@ pub(crate) fn parse_decimal(s: &str) -> Option<Inner> {
 }
 pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
     std::fmt::Display::fmt(a, f)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn big(limbs: &[u64]) -> BigUint {
+        limbs
+            .iter()
+            .fold(BigUint::zero(), |acc, &l| (acc << 64u32) + BigUint::from(l))
+    }
+
+    proptest! {
+        /// Lehmer's gcd equals the binary gcd of num-bigint, on numbers
+        /// built with a large common factor and on unrelated ones.
+        #[test]
+        fn lehmer_matches_binary_gcd(
+            a in proptest::collection::vec(any::<u64>(), 0..12),
+            b in proptest::collection::vec(any::<u64>(), 0..12),
+            g in proptest::collection::vec(any::<u64>(), 0..6),
+        ) {
+            let (a, b, g) = (big(&a), big(&b), big(&g));
+            for (x, y) in [(a.clone(), b.clone()), (&a * &g, &b * &g), (a.clone() * &g, g.clone())] {
+                prop_assert_eq!(lehmer_gcd(x.clone(), y.clone()), x.gcd(&y));
+            }
+        }
+    }
 }

@@ -41,10 +41,14 @@ pub struct Rat {
 }
 
 impl Rat {
-    /// Longest number text accepted by the parser.
+    /// Longest number text, in bytes, accepted by the parser.
     pub const MAX_TEXT: usize = 4096;
-    /// Largest decimal exponent magnitude accepted by the parser.
+    /// Largest magnitude of a written decimal exponent (`1e4096`, `1e-4096`)
+    /// accepted by the parser.
     pub const MAX_EXPONENT: i64 = 4096;
+    /// Most characters of input text quoted in an error message (see
+    /// [`excerpt`]).
+    pub const QUOTED_TEXT: usize = 64;
 
     /// `num / den` reduced; `None` when `den = 0`.
     pub fn new(num: Int, den: Int) -> Option<Rat> {
@@ -346,33 +350,41 @@ impl Rat {
         }
         s
     }
-    /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`) or a fraction
-    /// (`-7/2`) exactly. `_` separators are not accepted here.
+    /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`, `+2`) or a
+    /// fraction (`-7/2`) exactly.
+    ///
+    /// The grammar is strict: an optional sign `+` or `-` leads the number
+    /// (a fraction's denominator has none), and no whitespace or `_`
+    /// separator is accepted anywhere, so `" 2 "` and `"1 / 2"` are
+    /// [`ParseRatError::Invalid`]. Limits, refused as
+    /// [`ParseRatError::TooLarge`] before any big number is formed: at most
+    /// [`Rat::MAX_TEXT`] bytes of text, and a written exponent (the digits
+    /// after `e`) of magnitude at most [`Rat::MAX_EXPONENT`]. Texts quoted in
+    /// errors are cut by [`excerpt`].
     pub fn parse_exact(text: &str) -> Result<Rat, ParseRatError> {
-        let t = text.trim();
+        let t = text;
         if t.is_empty() {
             return Err(ParseRatError::Empty);
         }
         if t.len() > Rat::MAX_TEXT {
-            return Err(ParseRatError::TooLarge(format!(
-                "{}…",
-                t.chars().take(32).collect::<String>()
-            )));
+            return Err(ParseRatError::TooLarge(excerpt(t)));
+        }
+        let invalid = || ParseRatError::Invalid(excerpt(t));
+        if t.chars().any(char::is_whitespace) {
+            return Err(invalid());
         }
         let lower = t.to_ascii_lowercase();
-        let unsigned = lower.trim_start_matches(['+', '-']);
+        let unsigned = lower.strip_prefix(['+', '-']).unwrap_or(&lower);
         if unsigned == "inf" || unsigned == "nan" || unsigned == "infinity" {
-            return Err(ParseRatError::NotFinite(t.to_string()));
+            return Err(ParseRatError::NotFinite(excerpt(t)));
         }
-        let invalid = || ParseRatError::Invalid(t.to_string());
         if let Some((p, q)) = t.split_once('/') {
-            let num = Int::parse_decimal(p.trim()).ok_or_else(invalid)?;
-            let q = q.trim();
+            let num = Int::parse_decimal(p).ok_or_else(invalid)?;
             if q.starts_with(['+', '-']) {
                 return Err(invalid());
             }
             let den = Int::parse_decimal(q).ok_or_else(invalid)?;
-            return Rat::new(num, den).ok_or_else(|| ParseRatError::ZeroDenominator(t.to_string()));
+            return Rat::new(num, den).ok_or_else(|| ParseRatError::ZeroDenominator(excerpt(t)));
         }
         let (neg, body) = match t.as_bytes()[0] {
             b'-' => (true, &t[1..]),
@@ -386,10 +398,19 @@ impl Rat {
                 if ed.is_empty() || !ed.bytes().all(|b| b.is_ascii_digit()) {
                     return Err(invalid());
                 }
-                let ev: i64 = if ed.len() > 6 {
-                    return Err(ParseRatError::TooLarge(t.to_string()));
+                // Leading zeros do not make an exponent large.
+                let significant = ed.trim_start_matches('0');
+                if significant.len() > 6 {
+                    return Err(ParseRatError::TooLarge(excerpt(t)));
+                }
+                let magnitude: i64 = significant.parse().unwrap_or(0);
+                if magnitude > Rat::MAX_EXPONENT {
+                    return Err(ParseRatError::TooLarge(excerpt(t)));
+                }
+                let ev = if e.starts_with('-') {
+                    -magnitude
                 } else {
-                    e.parse().map_err(|_| invalid())?
+                    magnitude
                 };
                 (&body[..i], ev)
             }
@@ -402,10 +423,8 @@ impl Rat {
         {
             return Err(invalid());
         }
+        // |exp| <= MAX_EXPONENT + MAX_TEXT: the text bounds the fraction digits.
         let exp = exp - fp.len() as i64;
-        if exp.abs() > Rat::MAX_EXPONENT + Rat::MAX_TEXT as i64 {
-            return Err(ParseRatError::TooLarge(t.to_string()));
-        }
         let digits = format!("{ip}{fp}");
         let mut num = Int::parse_decimal(&digits).ok_or_else(invalid)?;
         if neg {
@@ -418,6 +437,18 @@ impl Rat {
             Rat::reduce(num, p10)
         })
     }
+}
+
+/// `t` as quoted in an error message: at most [`Rat::QUOTED_TEXT`]
+/// characters, with `…` appended when it was cut. Shared by every message
+/// that echoes input text (numbers here, keys and kinds in `ccd-scene`).
+pub fn excerpt(t: &str) -> String {
+    let mut chars = t.chars();
+    let mut q: String = chars.by_ref().take(Rat::QUOTED_TEXT).collect();
+    if chars.next().is_some() {
+        q.push('…');
+    }
+    q
 }
 
 impl std::str::FromStr for Rat {
@@ -572,12 +603,67 @@ mod tests {
             Rat::parse_exact(&long),
             Err(ParseRatError::TooLarge(_))
         ));
-        for bad in ["abc", "1/-2", "1.2.3", "e5", "1e", "--1", "1/2/3", "0x1"] {
+        for bad in [
+            "abc", "1/-2", "1/+2", "1.2.3", "e5", "1e", "--1", "+-1", "1/2/3", "0x1", " 2", "2 ",
+            " 2 ", "1 / 2", "1/ 2", "1 e5", "\t1", "1\n", "1_000", "+", "-",
+        ] {
             assert!(
                 matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))),
                 "{bad}"
             );
         }
+    }
+
+    #[test]
+    fn a_leading_plus_is_a_sign() {
+        assert_eq!(r("+2"), Rat::from(2));
+        assert_eq!(r("+1/3"), Rat::from_frac(1, 3));
+        assert_eq!(r("+2.5e+1"), Rat::from(25));
+        assert!(matches!(
+            Rat::parse_exact("+inf"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+    }
+
+    #[test]
+    fn the_exponent_limit_is_the_written_exponent() {
+        let max = Rat::MAX_EXPONENT;
+        assert_eq!(
+            r(&format!("1e{max}")),
+            Rat::from_int(Int::pow10(max as u32))
+        );
+        assert_eq!(
+            r(&format!("1e-{max}")),
+            Rat::new(Int::one(), Int::pow10(max as u32)).unwrap()
+        );
+        // Leading zeros do not count.
+        assert_eq!(r(&format!("1e000000{max}")), r(&format!("1e{max}")));
+        for over in [
+            format!("1e{}", max + 1),
+            format!("1e-{}", max + 1),
+            format!("1e{}", 2 * max),
+            "1E8192".to_string(),
+            "-1e+8192".to_string(),
+            "1e1000000".to_string(),
+        ] {
+            assert!(
+                matches!(Rat::parse_exact(&over), Err(ParseRatError::TooLarge(_))),
+                "{over}"
+            );
+        }
+        // Fraction digits are bounded by the text length, not the exponent.
+        let tiny = format!("0.{}1", "0".repeat(4000));
+        assert_eq!(r(&tiny), Rat::new(Int::one(), Int::pow10(4001)).unwrap());
+    }
+
+    #[test]
+    fn rejected_texts_are_quoted_cut() {
+        let long = format!("{}x", "1".repeat(3000));
+        let msg = Rat::parse_exact(&long).unwrap_err().to_string();
+        assert!(msg.len() < 300, "{msg}");
+        assert!(msg.contains('…'), "{msg}");
+        let short = Rat::parse_exact("1.2.3").unwrap_err().to_string();
+        assert!(short.contains("`1.2.3`") && !short.contains('…'), "{short}");
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! [`SceneError`]: why a scene is rejected, naming the offending field.
 
-use ccd_arith::{ParseRatError, Rat};
+use ccd_arith::{excerpt, ParseRatError, Rat};
 use std::fmt;
 
 use crate::{MAX_CONTROL_POINTS, MAX_INPUT_BYTES};
@@ -54,7 +54,11 @@ pub enum Limit {
 impl fmt::Display for Limit {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Limit::InputBytes => write!(f, "at most {MAX_INPUT_BYTES} bytes of input are read"),
+            Limit::InputBytes => write!(
+                f,
+                "at most {MAX_INPUT_BYTES} bytes ({} MiB) of input are read",
+                MAX_INPUT_BYTES >> 20
+            ),
             Limit::ControlPoints => write!(
                 f,
                 "at most {MAX_CONTROL_POINTS} control points per curve, i.e. degree <= {}",
@@ -139,7 +143,7 @@ pub enum SceneError {
         field: String,
     },
     /// A radius or weight that is not `> 0`.
-    #[error("field `{field}`: must be > 0, found {value}")]
+    #[error("field `{field}`: must be > 0, found {}", shown(.value))]
     NonPositive {
         /// Path of the number.
         field: String,
@@ -147,7 +151,7 @@ pub enum SceneError {
         value: Rat,
     },
     /// `span = [t0, t1]` with `t0 >= t1`.
-    #[error("field `span`: t0 = {t0} must be less than t1 = {t1}")]
+    #[error("field `span`: t0 = {} must be less than t1 = {}", shown(.t0), shown(.t1))]
     Span {
         /// Start of the span (boxed to keep the error small).
         t0: Box<Rat>,
@@ -161,7 +165,8 @@ pub enum SceneError {
     UnknownKind {
         /// Path of the `kind` field.
         field: String,
-        /// The kind as written (cut to at most 64 characters).
+        /// The kind as written (cut to at most [`Rat::QUOTED_TEXT`]
+        /// characters, see [`excerpt`]).
         kind: String,
     },
     /// An orientation quaternion that is exactly zero (no rotation).
@@ -185,7 +190,7 @@ pub enum SceneError {
         limit: Limit,
     },
     /// `format` is not 1.
-    #[error("field `format`: unsupported format {found} (only format 1 exists)")]
+    #[error("field `format`: unsupported format {} (only format 1 exists)", shown(.found))]
     UnsupportedFormat {
         /// The format number found.
         found: Rat,
@@ -224,16 +229,19 @@ impl FieldPath {
     pub(crate) fn root(key: &str) -> FieldPath {
         FieldPath::default().key(key)
     }
-    /// `self.key`; keys that are not bare TOML keys are quoted.
+    /// `self.key`; keys that are not bare TOML keys are quoted, and a key
+    /// from the file longer than [`Rat::QUOTED_TEXT`] characters is cut (see
+    /// [`excerpt`]), so an error never echoes a huge key in full.
     pub(crate) fn key(&self, key: &str) -> FieldPath {
         let bare = !key.is_empty()
             && key
                 .bytes()
                 .all(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'-');
-        let key = if bare {
-            key.to_string()
+        let cut = excerpt(key);
+        let key = if bare && cut == key {
+            cut
         } else {
-            format!("{key:?}")
+            format!("{cut:?}")
         };
         if self.0.is_empty() {
             FieldPath(key)
@@ -249,4 +257,10 @@ impl FieldPath {
     pub(crate) fn to_field(&self) -> String {
         self.0.clone()
     }
+}
+
+/// A value from the file as a message shows it: cut by [`excerpt`] (a
+/// number may have thousands of digits).
+fn shown(value: &Rat) -> String {
+    excerpt(&value.to_string())
 }

@@ -45,10 +45,14 @@ pub use error::{Limit, SceneError, TomlType};
 /// 15); more is refused with [`SceneError::TooLarge`] rather than computed.
 pub const MAX_CONTROL_POINTS: usize = 16;
 
-/// Longest input text, in bytes (1 MiB), that [`Scene::from_toml`] reads;
-/// longer input is refused with [`SceneError::TooLarge`] on field `<file>`
-/// before any parsing.
-pub const MAX_INPUT_BYTES: usize = 1 << 20;
+/// Longest input text, in bytes (4 MiB), that [`Scene::from_toml`] reads
+/// (and the `ccd-exact` binary reads of a file); longer input is refused
+/// with [`SceneError::TooLarge`] on field `<file>` before any parsing.
+///
+/// It is above the largest scene the other limits allow: two affine curves of
+/// [`MAX_CONTROL_POINTS`] matrices and weights, 13 numbers of at most
+/// [`Rat::MAX_TEXT`] characters each per point, come to about 1.7 MB.
+pub const MAX_INPUT_BYTES: usize = 4 << 20;
 
 /// A parsed, validated scene (format 1).
 #[derive(Clone, Debug, PartialEq)]

@@ -58,7 +58,7 @@ pub(crate) fn exact_text(text: &str, path: &FieldPath) -> Result<Rat, SceneError
     };
     // Checked here first: refusing over-long text must not depend on where
     // its characters' byte boundaries fall.
-    if text.trim().len() > Rat::MAX_TEXT {
+    if text.len() > Rat::MAX_TEXT {
         return Err(too_large());
     }
     Rat::parse_exact(text).map_err(|e| match e {

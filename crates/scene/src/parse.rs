@@ -2,7 +2,7 @@
 //! the value checks (radii and weights `> 0`, `t0 < t1`, nonzero quaternions
 //! and axes) are [`Scene::validate`]'s, run on the result.
 
-use ccd_arith::Rat;
+use ccd_arith::{excerpt, Rat};
 use ccd_motion::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
 use toml_edit::{Array, DocumentMut, Item, TableLike, TomlError, Value};
 
@@ -322,7 +322,7 @@ fn motion(t: &Table<'_>) -> Result<Motion> {
         other => {
             return Err(SceneError::UnknownKind {
                 field: kind_path.to_field(),
-                kind: other.chars().take(64).collect(),
+                kind: excerpt(other),
             })
         }
     })

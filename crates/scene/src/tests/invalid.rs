@@ -164,6 +164,18 @@ fn invalid_scene_suite() {
         // Over-long text whose 32nd byte is inside a multi-byte character.
         (a_body(&format!("radii = [\"1{}\", 1, 1]", "é".repeat(3000))), "TooLarge", Some("a.radii[0]")),
         (a_body(&format!("radii = [\"{}\", 1, 1]", "é".repeat(100))), "Number", Some("a.radii[0]")),
+        // The exponent limit is the written exponent, |e| <= 4096.
+        (a_body("radii = [\"1e4097\", 1, 1]"), "TooLarge", Some("a.radii[0]")),
+        (a_body("radii = [1, \"1e8192\", 1]"), "TooLarge", Some("a.radii[1]")),
+        (a_body("radii = [1, 1, \"2.5e-8192\"]"), "TooLarge", Some("a.radii[2]")),
+        (a_body("radii = [1, 1, 1e-8192]"), "TooLarge", Some("a.radii[2]")),
+        // No whitespace in a number string; a sign leads, nowhere else.
+        (a_body("radii = [\" 2 \", 1, 1]"), "Number", Some("a.radii[0]")),
+        (a_body("radii = [\"2 \", 1, 1]"), "Number", Some("a.radii[0]")),
+        (a_body("radii = [1, \"1 / 2\", 1]"), "Number", Some("a.radii[1]")),
+        (a_body("radii = [1, \"1/+2\", 1]"), "Number", Some("a.radii[1]")),
+        (a_body("radii = [1, \"+-2\", 1]"), "Number", Some("a.radii[1]")),
+        (a_body("radii = [1, \"\\t2\", 1]"), "Number", Some("a.radii[1]")),
     ];
     assert!(cases.len() >= 25);
     for (text, want, field) in &cases {
@@ -284,7 +296,7 @@ fn error_payloads_and_messages() {
     let SceneError::UnknownKind { kind, .. } = e else {
         unreachable!()
     };
-    assert_eq!(kind.chars().count(), 64);
+    assert_eq!(kind, format!("{}…", "k".repeat(64)));
 }
 
 /// The first error wins, in document order within a table.
@@ -326,4 +338,68 @@ fn deep_nesting_is_refused_not_overflowed() {
         "WrongType",
         Some("a.radii[0]"),
     );
+}
+
+/// An unknown key from the file is cut in the message, as an unknown kind is.
+#[test]
+fn a_huge_unknown_key_is_cut() {
+    for (key, written) in [
+        ("k".repeat(500_000), "k".repeat(500_000)),
+        ("é".repeat(100_000), format!("\"{}\"", "é".repeat(100_000))),
+    ] {
+        let e = reject(
+            &format!("[a]\nradii = [1, 1, 1]\n{written} = 1\n{B}"),
+            "Unknown",
+            Some(&format!(
+                "a.\"{}…\"",
+                &key.chars().take(64).collect::<String>()
+            )),
+        );
+        assert!(e.to_string().len() < 400, "{e}");
+    }
+    // Short keys are shown whole (quoted only when not bare).
+    reject(
+        &a_body("radii = [1, 1, 1]\nwobble = 1"),
+        "Unknown",
+        Some("a.wobble"),
+    );
+    reject(
+        &a_body("radii = [1, 1, 1]\n\"two words\" = 1"),
+        "Unknown",
+        Some("a.\"two words\""),
+    );
+}
+
+/// A rejected number is quoted cut, however long its text.
+#[test]
+fn a_long_bad_number_is_quoted_cut() {
+    let e = reject(
+        &a_body(&format!("radii = [\"{}x\", 1, 1]", "1".repeat(4000))),
+        "Number",
+        Some("a.radii[0]"),
+    );
+    assert!(e.to_string().len() < 300, "{e}");
+}
+
+/// Values from the file in messages are cut too: a radius, a span end or a
+/// format can have thousands of digits.
+#[test]
+fn huge_values_in_messages_are_cut() {
+    let huge = "\"-1e4000\"";
+    for (text, field) in [
+        (a_body(&format!("radii = [1, {huge}, 1]")), "a.radii[1]"),
+        (
+            format!("span = [\"1e4000\", 1]\n[a]\nradii = [1, 1, 1]\n{B}"),
+            "span",
+        ),
+        (
+            format!("format = \"1e4000\"\n[a]\nradii = [1, 1, 1]\n{B}"),
+            "format",
+        ),
+    ] {
+        let e = Scene::from_toml(&text).unwrap_err();
+        assert_eq!(e.field(), Some(field));
+        let shown = e.to_string();
+        assert!(shown.len() < 300 && shown.contains('…'), "{shown}");
+    }
 }

@@ -305,3 +305,36 @@ fn sixteen_control_points_are_accepted() {
     };
     assert_eq!(center.degree(), 15);
 }
+
+/// A leading `+` is a sign, in strings as in TOML's own number syntax, and
+/// the exponent limit is inclusive.
+#[test]
+fn signs_and_the_largest_exponents_are_accepted() {
+    let s = parse_ok(
+        "[a]\nradii = [\"+2\", +3, +0.5]\n[b]\nradii = [\"+1/3\", \"1e4096\", \"1e-4096\"]\n",
+    );
+    assert_eq!(s.a.radii, rats(["2", "3", "1/2"]));
+    assert_eq!(s.b.radii[0], rat("1/3"));
+    assert_eq!(s.b.radii[1], Rat::from_int(ccd_arith::Int::pow10(4096)));
+    assert_eq!(
+        &s.b.radii[2] * &s.b.radii[1],
+        Rat::one(),
+        "1e-4096 is the inverse of 1e4096"
+    );
+}
+
+/// A whole scene at the number limit parses: the input limit is above what
+/// the other limits allow.
+#[test]
+fn a_scene_at_every_limit_fits_the_input_limit() {
+    let n = format!("\"1.{}\"", "0".repeat(Rat::MAX_TEXT - 2));
+    let row = [n.as_str(); 4].join(", ");
+    let matrix = format!("[[{row}], [{row}], [{row}]]");
+    let points = vec![matrix.as_str(); crate::MAX_CONTROL_POINTS].join(",\n");
+    let weights = vec![n.as_str(); crate::MAX_CONTROL_POINTS].join(", ");
+    let body = format!("radii = [{n}, {n}, {n}]\n[a.motion]\nkind = \"affine\"\nmatrix = [{points}]\nweights = [{weights}]\n");
+    let text = format!("[a]\n{body}[b]\n{}", body.replace("[a.", "[b."));
+    assert!(text.len() <= crate::MAX_INPUT_BYTES, "{}", text.len());
+    let s = parse_ok(&text);
+    assert_eq!(s.a.radii[0], Rat::one());
+}

@@ -1,0 +1,532 @@
+//! The checks on one scene text: the binary answers within the bound with
+//! exit status 0 or 2 and no panic; a refusal names the field; an answer is
+//! a well-formed timeline that agrees with the static classifier at
+//! rational instants inside its segments.
+
+use crate::common::static_state;
+use ccd_arith::{Int, Rat};
+use ccd_exact::{Scene, State};
+use ccd_motion::Motion;
+use serde_json::Value;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+/// Which runs of the binary a scene gets besides the exact `--json` one.
+#[derive(Clone, Copy, Debug)]
+pub struct Runs {
+    /// `--arithmetic float` (exit status and the bound only: not certified).
+    pub float: bool,
+    /// `--first-contact`, whose first contact must meet the full run's.
+    pub first_contact: bool,
+}
+
+/// How a scene fared.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Answered; `compared` instants matched the static classifier.
+    Answered { compared: usize },
+    /// Refused with exit status 2 and a message naming the field.
+    Refused,
+}
+
+/// One broken promise, described for the report.
+pub type Failure = String;
+
+/// The output of one run of the binary.
+struct Run {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+/// Seconds of CPU time the process `pid` has used (user + system, from
+/// `/proc/PID/stat`, in the kernel's fixed USER_HZ = 100 ticks per second);
+/// `None` where there is no `/proc`.
+fn cpu_seconds(pid: u32) -> Option<f64> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    // The command name, in parentheses, may hold spaces: fields after it.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    let ticks = |i: usize| fields.get(i)?.parse::<u64>().ok();
+    Some((ticks(11)? + ticks(12)?) as f64 / 100.0)
+}
+
+/// How long a run of the binary may take before it counts as a hang: `cpu`
+/// seconds of its own CPU time (so a machine loaded by other builds does
+/// not turn a slow answer into a false hang), and `WALL_FACTOR` times that
+/// in wall-clock time in any case (a child that blocks, or no `/proc`).
+#[derive(Clone, Copy, Debug)]
+pub struct Bound {
+    /// CPU seconds of the child.
+    pub cpu: f64,
+}
+
+/// The wall-clock backstop, as a multiple of the CPU bound.
+const WALL_FACTOR: u32 = 5;
+
+impl Bound {
+    /// `self` scaled by `k` (slow regressions).
+    pub fn times(self, k: f64) -> Bound {
+        Bound { cpu: self.cpu * k }
+    }
+    fn wall(self) -> Duration {
+        Duration::from_secs_f64(self.cpu) * WALL_FACTOR
+    }
+}
+
+/// Runs the binary on `path` with `args`, killing it once it passes
+/// `bound` (with a stack sample first when gdb is at hand).
+fn run(path: &Path, args: &[&str], bound: Bound) -> Result<Run, Failure> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ccd-exact"))
+        .arg(path)
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start the binary: {e}"))?;
+    // Drained on threads so a large output cannot block the child.
+    let drain = |mut r: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut s = Vec::new();
+            let _ = r.read_to_end(&mut s);
+            String::from_utf8_lossy(&s).into_owned()
+        })
+    };
+    let out = drain(Box::new(child.stdout.take().expect("piped")));
+    let err = drain(Box::new(child.stderr.take().expect("piped")));
+    let start = Instant::now();
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break status,
+            Ok(None) => {
+                let cpu = cpu_seconds(child.id()).unwrap_or(0.0);
+                if cpu <= bound.cpu && start.elapsed() <= bound.wall() {
+                    std::thread::sleep(Duration::from_millis(5));
+                    continue;
+                }
+                let stack = stack_sample(child.id());
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(format!(
+                    "no answer within the bound of {} s CPU / {:?} wall (`ccd-exact {} {}` killed after {cpu:.1} s CPU, {:.1?} wall; the bound is a hang detector, not a speed target){stack}",
+                    bound.cpu,
+                    bound.wall(),
+                    path.display(),
+                    args.join(" "),
+                    start.elapsed()
+                ));
+            }
+            Err(e) => return Err(format!("cannot wait for the binary: {e}")),
+        }
+    };
+    Ok(Run {
+        code: status.code(),
+        stdout: out.join().unwrap_or_default(),
+        stderr: err.join().unwrap_or_default(),
+    })
+}
+
+/// `gdb -p PID -batch -ex bt` of a stalled child, when gdb is installed and
+/// `CCD_FUZZ_GDB` is not `0`; empty otherwise.
+fn stack_sample(pid: u32) -> String {
+    if std::env::var("CCD_FUZZ_GDB").as_deref() == Ok("0") {
+        return String::new();
+    }
+    let Ok(out) = Command::new("gdb")
+        .args(["-p", &pid.to_string(), "-batch", "-ex", "bt 40"])
+        .stdin(Stdio::null())
+        .output()
+    else {
+        return String::new();
+    };
+    let frames: Vec<&str> = std::str::from_utf8(&out.stdout)
+        .unwrap_or("")
+        .lines()
+        .filter(|l| l.starts_with('#'))
+        .collect();
+    if frames.is_empty() {
+        String::new()
+    } else {
+        format!("\nstack sample (gdb):\n{}", frames.join("\n"))
+    }
+}
+
+/// How a refusal starts, after `ccd-exact: FILE: `: with the field (scene
+/// and motion errors), the option (`--arithmetic float` on a helical
+/// scene), `not TOML`, or the path of the interval path's
+/// errors (`a.motion: …`, `span: …`).
+const NAMES_THE_FIELD: [&str; 6] = ["field `", "option `", "not TOML", "a.", "b.", "span"];
+
+/// The checks common to every run: exit 0 or 2, no panic, and a refusal
+/// that names what was wrong in a message of bounded length.
+fn status_ok(r: &Run, path: &Path, what: &str) -> Result<(), Failure> {
+    let fail = |why: &str| {
+        Err(format!(
+            "{what}: {why} (exit {:?})\nstderr: {}",
+            r.code,
+            cut(&r.stderr, 2000)
+        ))
+    };
+    if r.stderr.contains("panicked") {
+        return fail("panicked");
+    }
+    match r.code {
+        Some(0) => Ok(()),
+        Some(2) => {
+            let msg = r.stderr.trim_end();
+            let names = msg
+                .strip_prefix(&format!("ccd-exact: {}: ", path.display()))
+                .is_some_and(|m| NAMES_THE_FIELD.iter().any(|n| m.starts_with(n)));
+            if !names {
+                fail("exit 2 without a message naming the field")
+            } else if msg.contains("internal error") {
+                fail("internal error")
+            } else if msg.len() > 1500 {
+                fail("error message longer than 1500 bytes")
+            } else {
+                Ok(())
+            }
+        }
+        _ => fail("exit status neither 0 nor 2"),
+    }
+}
+
+/// `s` cut to at most `n` bytes at a character boundary.
+pub fn cut(s: &str, n: usize) -> String {
+    if s.len() <= n {
+        return s.to_string();
+    }
+    let mut end = n;
+    while !s.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}… ({} bytes in all)", &s[..end], s.len())
+}
+
+/// A time of the JSON result: its certified enclosure.
+#[derive(Clone, Debug, PartialEq)]
+struct Time {
+    lo: Rat,
+    hi: Rat,
+}
+
+/// A timeline segment of the JSON result.
+#[derive(Debug)]
+struct Segment {
+    state: State,
+    start: Time,
+    end: Time,
+}
+
+/// An exact rational `p/q` or `p` of the result. Not through the scene
+/// parser: an output number may be longer than the input limit (a span
+/// `[0, 1e-4096]` has an end of 4098 characters).
+fn rat(v: &Value, what: &str) -> Result<Rat, Failure> {
+    let read = |s: &str| {
+        let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+        Rat::new(Int::parse_decimal(p)?, Int::parse_decimal(q)?)
+    };
+    v.as_str().and_then(read).ok_or_else(|| {
+        format!(
+            "JSON: {what} is not an exact rational: {}",
+            cut(&v.to_string(), 200)
+        )
+    })
+}
+
+fn time(v: &Value) -> Result<Time, Failure> {
+    let t = Time {
+        lo: rat(&v["lo"], "lo")?,
+        hi: rat(&v["hi"], "hi")?,
+    };
+    if t.lo > t.hi {
+        return Err(format!("JSON: enclosure with lo > hi: {v}"));
+    }
+    Ok(t)
+}
+
+fn state(v: &Value) -> Result<State, Failure> {
+    match v.as_str() {
+        Some("separate") => Ok(State::Separate),
+        Some("touch") => Ok(State::Touch),
+        Some("overlap") => Ok(State::Overlap),
+        _ => Err(format!("JSON: unknown state {v}")),
+    }
+}
+
+/// The result's span and timeline, checked against the contract: it starts
+/// at t0, each segment starts where the last ended, it ends at t1 (when
+/// complete); `contacts` are its isolated touches; `collision_free` and
+/// `first_contact` agree with it.
+fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
+    let span = [
+        rat(&v["span"][0], "span[0]")?,
+        rat(&v["span"][1], "span[1]")?,
+    ];
+    let segs: Vec<Segment> = v["timeline"]
+        .as_array()
+        .ok_or("JSON: no timeline")?
+        .iter()
+        .map(|s| {
+            Ok(Segment {
+                state: state(&s["state"])?,
+                start: time(&s["start"])?,
+                end: time(&s["end"])?,
+            })
+        })
+        .collect::<Result<_, Failure>>()?;
+    // A certified end of the timeline is the span's end exactly; an
+    // uncertified one (the interval path clips a candidate reaching past
+    // the span and flags it, docs/helical.md) must contain it.
+    let at = |t: &Time, v: &Value, end: &Rat| {
+        if v["certified"].as_bool() != Some(false) {
+            t.lo == *end && t.hi == *end
+        } else {
+            t.lo <= *end && *end <= t.hi
+        }
+    };
+    let raw = v["timeline"].as_array().expect("checked above");
+    let first = segs.first().ok_or("JSON: empty timeline")?;
+    if !at(&first.start, &raw[0]["start"], &span[0]) {
+        return Err(format!("timeline starts at {:?}, not t0", first.start));
+    }
+    for w in segs.windows(2) {
+        if w[0].end != w[1].start {
+            return Err(format!("gap or overlap between {:?} and {:?}", w[0], w[1]));
+        }
+    }
+    for s in &segs {
+        if s.start != s.end && s.start.hi > s.end.lo {
+            return Err(format!("segment {s:?} has crossed enclosures"));
+        }
+    }
+    let complete = v["complete"].as_bool() != Some(false);
+    let last = segs.last().expect("nonempty");
+    if complete && !at(&last.end, &raw[raw.len() - 1]["end"], &span[1]) {
+        return Err(format!("timeline ends at {:?}, not t1", last.end));
+    }
+    let mut touches: Vec<&Time> = segs
+        .iter()
+        .filter(|s| s.state == State::Touch && s.start == s.end)
+        .map(|s| &s.start)
+        .collect();
+    let contacts: Vec<Time> = v["contacts"]
+        .as_array()
+        .ok_or("JSON: no contacts")?
+        .iter()
+        .map(time)
+        .collect::<Result<_, _>>()?;
+    // A first-contact run that stops at a touch cannot tell yet whether it
+    // is an isolated contact.
+    let stops_at_touch = last.state == State::Touch && last.start == last.end;
+    if !complete && stops_at_touch && contacts.len() + 1 == touches.len() {
+        touches.pop();
+    }
+    if contacts.iter().collect::<Vec<_>>() != touches {
+        return Err(format!(
+            "contacts {contacts:?} are not the isolated touches {touches:?}"
+        ));
+    }
+    let separate = segs.iter().all(|s| s.state == State::Separate);
+    if complete && v["collision_free"].as_bool() != Some(separate) {
+        return Err("collision_free disagrees with the timeline".into());
+    }
+    if v["first_contact"].is_null() != (complete && separate) {
+        return Err("first_contact disagrees with collision_free".into());
+    }
+    Ok((span, segs))
+}
+
+/// Rational instants strictly inside the segments (at most `max`), chosen
+/// by `pick` among fractions of each segment's open interior.
+fn instants(
+    segs: &[Segment],
+    max: usize,
+    pick: &mut dyn FnMut(usize) -> usize,
+) -> Vec<(Rat, State)> {
+    let mut out = Vec::new();
+    let open: Vec<&Segment> = segs.iter().filter(|s| s.start.hi < s.end.lo).collect();
+    for k in 0..max.min(2 * open.len()) {
+        let s = open[if k < open.len() { k } else { pick(open.len()) }];
+        let den = 2 + pick(8) as i64;
+        let num = 1 + pick(den as usize - 1) as i64;
+        let f = Rat::from_frac(num, den);
+        let t = &s.start.hi + &(&(&s.end.lo - &s.start.hi) * &f);
+        out.push((t, s.state));
+    }
+    out
+}
+
+/// A scratch file named `k` of this process, rewritten for each scene (a
+/// failing scene is kept apart by the caller).
+pub fn scratch(k: &str) -> PathBuf {
+    let dir =
+        PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("fuzz-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    dir.join(format!("{k}.toml"))
+}
+
+/// Every check on scene `text` (written to `path`), each run of the binary
+/// bounded by `bound`; `pick` chooses the instants compared.
+pub fn check(
+    text: &str,
+    path: &Path,
+    runs: Runs,
+    bound: Bound,
+    pick: &mut dyn FnMut(usize) -> usize,
+) -> Result<Verdict, Failure> {
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let exact = run(path, &["--json"], bound)?;
+    status_ok(&exact, path, "exact")?;
+    if runs.float {
+        status_ok(
+            &run(path, &["--json", "--arithmetic", "float"], bound)?,
+            path,
+            "float",
+        )?;
+    }
+    if exact.code != Some(0) {
+        return Ok(Verdict::Refused);
+    }
+    let json: Value = serde_json::from_str(&exact.stdout).map_err(|e| {
+        format!(
+            "exact: output is not JSON ({e}): {}",
+            cut(&exact.stdout, 500)
+        )
+    })?;
+    let (span, segs) = timeline(&json)?;
+    let scene = Scene::from_toml(text)
+        .map_err(|e| format!("the binary answered, the library refuses: {e}"))?;
+    let helical = |m: &Motion| matches!(m, Motion::Helical { .. });
+    let rational = !helical(&scene.a.motion) && !helical(&scene.b.motion);
+    if rational && json["certified"] != Value::Bool(true) {
+        return Err("the exact path answered a rational scene uncertified".into());
+    }
+    if runs.first_contact {
+        let fc = run(path, &["--json", "--first-contact"], bound)?;
+        status_ok(&fc, path, "first contact")?;
+        let v: Value = serde_json::from_str(&fc.stdout)
+            .map_err(|e| format!("first contact: output is not JSON ({e})"))?;
+        timeline(&v).map_err(|e| format!("first contact: {e}"))?;
+        let (a, b) = (&json["first_contact"], &v["first_contact"]);
+        let meet = match (a.is_null(), b.is_null()) {
+            (true, true) => true,
+            (false, false) => time(a)?.lo <= time(b)?.hi && time(b)?.lo <= time(a)?.hi,
+            _ => false,
+        };
+        if !meet {
+            return Err(format!("--first-contact gives {b}, the full run {a}"));
+        }
+    }
+    if !rational {
+        // Placements at a rational instant are not rational.
+        return Ok(Verdict::Answered { compared: 0 });
+    }
+    let samples = instants(&segs, 8, pick);
+    let compared = samples.len();
+    // The classifier runs on a thread so that a stall there is reported
+    // within the bound too (the thread is abandoned).
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let width = &span[1] - &span[0];
+        for (t, want) in samples {
+            let u = &(&t - &span[0]) / &width;
+            let got = static_state(&scene, &u);
+            if got != want {
+                let _ = tx.send(Err(format!(
+                    "the timeline says {want:?} at t = {t}, the static classifier {got:?}"
+                )));
+                return;
+            }
+        }
+        let _ = tx.send(Ok(()));
+    });
+    match rx.recv_timeout(bound.wall()) {
+        Ok(r) => r.map(|()| Verdict::Answered { compared }),
+        Err(mpsc::RecvTimeoutError::Timeout) => Err(format!(
+            "the static classifier took over {:?}",
+            bound.wall()
+        )),
+        Err(mpsc::RecvTimeoutError::Disconnected) => Err("the static classifier panicked".into()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn t(lo: &str, hi: &str) -> Value {
+        json!({"lo": lo, "hi": hi, "approx": "", "certified": true})
+    }
+
+    /// A well-formed result: separate, touch at 1/2, separate.
+    fn good() -> Value {
+        json!({
+            "span": ["0", "1"],
+            "collision_free": false,
+            "complete": true,
+            "first_contact": t("1/3", "2/3"),
+            "contacts": [t("1/3", "2/3")],
+            "timeline": [
+                {"state": "separate", "start": t("0", "0"), "end": t("1/3", "2/3")},
+                {"state": "touch", "start": t("1/3", "2/3"), "end": t("1/3", "2/3")},
+                {"state": "separate", "start": t("1/3", "2/3"), "end": t("1", "1")},
+            ],
+        })
+    }
+
+    #[test]
+    fn the_contract_checks_can_fail() {
+        assert!(timeline(&good()).is_ok());
+        type Breaks = fn(&mut Value);
+        let broken: [(&str, Breaks); 6] = [
+            ("gap", |v| v["timeline"][2]["start"] = t("1/2", "2/3")),
+            ("short", |v| v["timeline"][2]["end"] = t("0", "1")),
+            ("late start", |v| {
+                v["timeline"][0]["start"] = t("1/9", "1/9")
+            }),
+            ("contacts", |v| v["contacts"] = json!([])),
+            ("free", |v| v["collision_free"] = json!(true)),
+            ("state", |v| v["timeline"][0]["state"] = json!("apart")),
+        ];
+        for (name, breaks) in broken {
+            let mut v = good();
+            breaks(&mut v);
+            assert!(timeline(&v).is_err(), "{name} not caught");
+        }
+        // An uncertified end need only contain t1.
+        let mut v = good();
+        v["timeline"][2]["end"] = json!({"lo": "3/4", "hi": "1", "certified": false});
+        assert!(timeline(&v).is_ok());
+    }
+
+    #[test]
+    fn instants_lie_strictly_inside_segments() {
+        let (_, segs) = timeline(&good()).unwrap();
+        let mut k = 0;
+        let got = instants(&segs, 8, &mut |n| {
+            k += 1;
+            k % n
+        });
+        assert_eq!(got.len(), 4, "two open segments, two instants each");
+        for (at, state) in got {
+            assert_eq!(state, State::Separate);
+            assert!(
+                (Rat::zero() < at && at < Rat::from_frac(1, 3))
+                    || (Rat::from_frac(2, 3) < at && at < Rat::one()),
+                "{at}"
+            );
+        }
+    }
+
+    #[test]
+    fn long_output_rationals_are_read() {
+        let long = format!("1/{}", "1".repeat(5000));
+        assert!(rat(&json!(long), "x").is_ok());
+        assert!(rat(&json!("1/0"), "x").is_err());
+        assert!(rat(&json!("x"), "x").is_err());
+    }
+}
