@@ -39,7 +39,7 @@ mod signs;
 
 pub use algorithm::{symbolic, Arithmetic, Options};
 pub use ccd_scene::{Scene, SceneError};
-pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
+pub use ccd_timeline::{Gap, Instant, Outcome, Segment, State, Stats, Witness};
 pub use error::CcdError;
 pub use json::to_json;
 
