@@ -320,8 +320,9 @@ fn log2_bound(x: &Rat) -> u64 {
 }
 
 /// Bits of the largest angle `|rate·t|` or `|frequency·t|` of a helical
-/// body on the span (capped at [`MAX_EXTRA_BITS`]): the extra working
-/// precision that keeps `sin` and `cos` of the angle tight.
+/// body on the span (capped at [`MAX_EXTRA_BITS`]; 0 below `2^16`): the
+/// extra working precision that keeps `sin` and `cos` of the angle tight
+/// (an angle near `2^M` computed with `p` bits is known to about `2^(M−p)`).
 fn angle_bits(bodies: [&Body; 2], span: &[Rat; 2]) -> u32 {
     let t = log2_bound(&span[0]).max(log2_bound(&span[1]));
     let mut bits = 0u64;
@@ -330,6 +331,10 @@ fn angle_bits(bodies: [&Body; 2], span: &[Rat; 2]) -> u32 {
             bits = bits.max(log2_bound(rate) + t);
             bits = bits.max(log2_bound(&center.frequency) + t);
         }
+    }
+    // Angles below 2^16 cost at most 16 of the ≥ 128 multi-precision bits.
+    if bits <= 16 {
+        return 0;
     }
     bits.min(u64::from(MAX_EXTRA_BITS)) as u32
 }
@@ -445,7 +450,7 @@ impl Query<'_> {
             .abs()
             .max(self.span[1].to_f64().abs())
             .max(dt);
-        let ratio = (scale / dt).log2().clamp(0.0, 4096.0);
+        let ratio = (scale / dt).log2().max(0.0);
         (self.options.digits as f64 * std::f64::consts::LOG2_10 + ratio + 96.0).ceil() as u32
             + self.extra_bits
     }
@@ -983,8 +988,9 @@ pub fn run(
         .map(|s| s.start.clone())
         .collect();
     let covered_to_end = timeline.last().is_some_and(|s| s.end.hi == t1);
-    let complete =
-        gaps.is_empty() && covered_to_end && !(first_only && (stop_early || !breaks.is_empty()));
+    // Complete exactly when the timeline tiles [t0, t1] (a first-contact
+    // query stops at its first break, short of t1 unless its gap was filled).
+    let complete = gaps.is_empty() && covered_to_end && !stop_early;
     let separation = complete
         && timeline
             .iter()
