@@ -176,14 +176,14 @@ fn table(out: &Outcome, options: &Options) -> String {
     } else if !float && !out.collision_free && !out.certified() {
         t.push_str("a collision is proven (a certified touch or overlap)\n");
     }
-    if options.first_contact_only && !out.complete {
-        t.push_str("(first contact only: the timeline stops there)\n");
-    } else if !out.complete {
+    if !out.gaps.is_empty() {
         let _ = writeln!(
             t,
             "timeline NOT complete: {} piece(s) of the span undecided within the effort budget",
             out.gaps.len()
         );
+    } else if options.first_contact_only && !out.complete {
+        t.push_str("(first contact only: the timeline stops there)\n");
     }
     if float {
         if !out.certified() {

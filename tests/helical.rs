@@ -529,7 +529,7 @@ fn frequency_1e10_stops_at_its_budget_honestly() {
 
 #[test]
 fn fast_spin_family_with_answers_known_by_construction() {
-    for rate in ["3", "100", "1e300"] {
+    for rate in ["3", "100", "1e300", "1e4000"] {
         // B far from A: separate for every orientation.
         let far = scene(&format!(
             r#"

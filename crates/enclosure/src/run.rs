@@ -83,10 +83,12 @@ const SPHERE_MIN_WIDTH_LOG2: i64 = -14;
 /// Effort budget: instants probed for a proven non-separate state inside
 /// the gaps, in all.
 const MAX_WITNESS_PROBES: usize = 16;
-/// The angle's bits are capped here (a rate of `2^16384` per unit of time
-/// is not escalated further; its enclosures stay wide and its pieces
-/// undecided).
-const MAX_EXTRA_BITS: u32 = 1 << 14;
+/// The angle's bits are capped here (an angle above `2^4096`, e.g. a rate
+/// of `1e4000`, is evaluated with 4096 extra bits only: its `sin`/`cos`
+/// stay wide and its pieces are decided by the sphere certificates or left
+/// as gaps; multi-precision work at more bits grows too fast to stay within
+/// seconds).
+const MAX_EXTRA_BITS: u32 = 1 << 12;
 
 /// What is known about `sr0 ≡ 0`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1026,4 +1028,68 @@ pub fn run(
         complete,
         stats,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ccd_motion::HelicalCenter;
+
+    fn spinning(rate: Rat, frequency: Rat) -> Body {
+        let z = || [Rat::zero(), Rat::zero(), Rat::zero()];
+        Body {
+            radii: [Rat::from(2), Rat::from(1), Rat::from(1)],
+            motion: Motion::Helical {
+                orientation: Motion::identity(),
+                axis: [Rat::zero(), Rat::zero(), Rat::one()],
+                rate,
+                center: HelicalCenter {
+                    base: z(),
+                    velocity: z(),
+                    cos: [Rat::one(), Rat::zero(), Rat::zero()],
+                    sin: z(),
+                    frequency,
+                },
+            },
+        }
+    }
+
+    #[test]
+    fn log2_bound_is_an_upper_bound() {
+        for (p, q) in [
+            (1i64, 1i64),
+            (3, 2),
+            (1, 3),
+            (1000, 1),
+            (1 << 40, 3),
+            (7, 1 << 20),
+        ] {
+            let x = Rat::from_frac(p, q);
+            assert!(2f64.powi(log2_bound(&x) as i32) >= x.to_f64(), "{x}");
+        }
+        assert_eq!(log2_bound(&Rat::zero()), 0);
+    }
+
+    #[test]
+    fn angle_bits_follow_the_largest_angle() {
+        let span = [Rat::zero(), Rat::from(2)];
+        let still = Body {
+            radii: [Rat::one(), Rat::one(), Rat::one()],
+            motion: Motion::at_origin(),
+        };
+        let big = |k: u32| Rat::from_int(Int::pow10(k));
+        // Small angles add nothing; 1e300·2 needs about 998 bits.
+        assert_eq!(
+            angle_bits([&spinning(Rat::from(3), Rat::zero()), &still], &span),
+            0
+        );
+        let bits = angle_bits([&still, &spinning(big(300), Rat::zero())], &span);
+        assert!((998..=1010).contains(&bits), "{bits}");
+        let bits = angle_bits([&spinning(Rat::zero(), big(10)), &still], &span);
+        assert!((35..=40).contains(&bits), "{bits}");
+        assert_eq!(
+            angle_bits([&spinning(big(4000), Rat::zero()), &still], &span),
+            MAX_EXTRA_BITS
+        );
+    }
 }
