@@ -1,7 +1,7 @@
 //! The `--json` result of the contract (`scene-format.md`, format 1).
 
 use ccd_arith::Rat;
-use ccd_timeline::{Box3, Geometry, Instant, Outcome};
+use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome};
 use serde_json::{json, Value};
 
 /// Decimals of `approx`: 12, plus one per leading zero of the span's width.
@@ -68,15 +68,26 @@ fn contact(i: &Instant, g: Option<&Geometry>, digits: u32) -> Value {
     v
 }
 
-/// The result as the contract's JSON object (plus `complete`, `certified`
-/// and `stats`, which consumers may ignore).
+fn gap(g: &Gap) -> Value {
+    json!({
+        "lo": g.lo.to_string(),
+        "hi": g.hi.to_string(),
+        "reason": g.reason,
+        "witness": g.witness.as_ref().map(|w| json!({"t": w.t.to_string(), "state": w.state.name()})),
+    })
+}
+
+/// The result as the contract's JSON object (plus `complete`, `certified`,
+/// `gaps`, `collision_free_reason`, a `certified` flag per segment, and
+/// `stats`, which consumers may ignore; semantics in `docs/scene-format.md`).
 pub fn to_json(outcome: &Outcome) -> Value {
     let d = approx_digits(outcome);
     let s = &outcome.stats;
     json!({
         "format": 1,
         "span": [outcome.span[0].to_string(), outcome.span[1].to_string()],
-        "collision_free": outcome.collision_free,
+        "collision_free": if outcome.undecided.is_some() { Value::Null } else { Value::Bool(outcome.collision_free) },
+        "collision_free_reason": outcome.undecided,
         "first_contact": outcome.first_contact.as_ref().map(|i| {
             let k = outcome.contacts.iter().position(|c| c == i);
             contact(i, k.and_then(|k| outcome.geometry.get(k)), d)
@@ -87,10 +98,11 @@ pub fn to_json(outcome: &Outcome) -> Value {
             "state": seg.state.name(),
             "start": instant(&seg.start, d),
             "end": instant(&seg.end, d),
+            "certified": seg.certified,
         })).collect::<Vec<_>>(),
+        "gaps": outcome.gaps.iter().map(gap).collect::<Vec<_>>(),
         "complete": outcome.complete,
-        "certified": outcome.timeline.iter().all(|seg| seg.start.certified && seg.end.certified)
-            && outcome.contacts.iter().all(|c| c.certified),
+        "certified": outcome.certified(),
         "stats": {
             "deg_f": s.deg_f,
             "deg_sr0": s.deg_sr0,

@@ -40,7 +40,7 @@ mod signs;
 
 pub use algorithm::{symbolic, Arithmetic, Options};
 pub use ccd_scene::{Scene, SceneError};
-pub use ccd_timeline::{Box3, Geometry, Instant, Outcome, Segment, State, Stats};
+pub use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome, Segment, State, Stats, Witness};
 pub use error::CcdError;
 pub use json::to_json;
 

@@ -95,8 +95,12 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
     }))
 }
 
-fn table(out: &Outcome) -> String {
+/// The human-readable result: the timeline, the contacts, and in words
+/// what is proven and what is not (`float`: the float mode ran, so nothing
+/// is).
+fn table(out: &Outcome, options: &Options) -> String {
     use std::fmt::Write as _;
+    let float = options.arithmetic == Arithmetic::Float;
     let s = &out.stats;
     let mut t = String::new();
     if s.branch.starts_with("interval") {
@@ -114,14 +118,36 @@ fn table(out: &Outcome) -> String {
         );
     }
     let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", "state", "from", "to");
-    for seg in &out.timeline {
+    let unproven = |ok: bool| if ok || float { "" } else { "  (not proven)" };
+    let mut gaps = out.gaps.iter().peekable();
+    let gap_line = |t: &mut String, g: &ccd_exact::Gap| {
         let _ = writeln!(
             t,
-            "  {:<9} {:>20}  {:>20}",
+            "  {:<9} {:>20}  {:>20}  (not covered: {})",
+            "undecided",
+            g.lo.to_decimal(12),
+            g.hi.to_decimal(12),
+            g.reason
+        );
+        if let Some(w) = &g.witness {
+            let _ = writeln!(t, "  {:<9} proven {} at t = {}", "", w.state.name(), w.t);
+        }
+    };
+    for seg in &out.timeline {
+        while let Some(g) = gaps.next_if(|g| g.hi <= seg.start.lo) {
+            gap_line(&mut t, g);
+        }
+        let _ = writeln!(
+            t,
+            "  {:<9} {:>20}  {:>20}{}",
             seg.state.name(),
             seg.start.approx(12),
-            seg.end.approx(12)
+            seg.end.approx(12),
+            unproven(seg.certified)
         );
+    }
+    for g in gaps {
+        gap_line(&mut t, g);
     }
     t.push('\n');
     if out.contacts.is_empty() {
@@ -162,24 +188,55 @@ fn table(out: &Outcome) -> String {
             None => {}
         }
     }
-    match &out.first_contact {
-        Some(fc) => {
-            let _ = writeln!(t, "first contact ≈ {}", fc.approx(15));
+    match (&out.first_contact, &out.undecided) {
+        (Some(fc), _) => {
+            let mark = unproven(fc.certified);
+            let _ = writeln!(t, "first contact ≈ {}{mark}", fc.approx(15));
         }
-        None if out.collision_free => t.push_str("collision-free over the span\n"),
-        None => {}
+        (None, None) if out.collision_free => t.push_str("collision-free over the span\n"),
+        _ => {}
     }
-    if !out.complete {
+    if let Some(why) = &out.undecided {
+        let _ = writeln!(
+            t,
+            "collision-free: NOT decided (neither separation over the span nor a collision is proven: {why})"
+        );
+    } else if !float && !out.collision_free && !out.certified() {
+        t.push_str("a collision is proven (a certified touch or overlap)\n");
+    }
+    if !out.gaps.is_empty() {
+        let _ = writeln!(
+            t,
+            "timeline NOT complete: {} piece(s) of the span undecided within the effort budget",
+            out.gaps.len()
+        );
+    } else if options.first_contact_only && !out.complete {
         t.push_str("(first contact only: the timeline stops there)\n");
     }
-    if out
-        .timeline
-        .iter()
-        .any(|s| !s.start.certified || !s.end.certified)
-    {
-        t.push_str(
-            "NOT certified: float arithmetic (run with --arithmetic exact for proven answers)\n",
-        );
+    if float {
+        if !out.certified() {
+            t.push_str(
+                "NOT certified: float arithmetic (run with --arithmetic exact for proven answers)\n",
+            );
+        }
+    } else if !out.certified() {
+        let counts = [
+            (
+                out.timeline.iter().filter(|s| !s.certified).count(),
+                "segment state(s) not proven",
+            ),
+            (
+                out.contacts.iter().filter(|c| !c.certified).count(),
+                "contact(s) not certified",
+            ),
+            (out.gaps.len(), "piece(s) of the span undecided"),
+        ];
+        let what: Vec<String> = counts
+            .iter()
+            .filter(|(n, _)| *n > 0)
+            .map(|(n, what)| format!("{n} {what}"))
+            .collect();
+        let _ = writeln!(t, "NOT everything is proven: {}", what.join(", "));
     }
     t
 }
@@ -229,7 +286,7 @@ fn main() -> ExitCode {
             let text = if args.json {
                 serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default() + "\n"
             } else {
-                table(&out)
+                table(&out, &args.options)
             };
             // A reader that stops early (`| head`) is not an error of ours.
             match std::io::stdout().lock().write_all(text.as_bytes()) {

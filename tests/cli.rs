@@ -258,3 +258,56 @@ fn input_edges_exit_2_naming_the_field() {
     );
     assert_eq!(code, Some(0), "{err}");
 }
+
+#[test]
+fn helical_output_says_what_is_not_proven() {
+    // Issue 18: a spin of 1e300 rad per unit of time. Overlap at t = 1/2 is
+    // proven (B's centre inside A); the pieces where the spin makes about
+    // 1e299 contacts are undecided gaps, so the timeline is not complete.
+    let out = cli(&[&scene("issue-18-spin-1e300.toml"), "--json"]);
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["collision_free"], false);
+    assert_eq!(v["collision_free_reason"], Value::Null);
+    assert_eq!(v["complete"], false);
+    assert_eq!(v["certified"], false);
+    let gaps = v["gaps"].as_array().unwrap();
+    assert!(!gaps.is_empty());
+    assert!(gaps
+        .iter()
+        .all(|g| g["reason"].as_str().is_some_and(|r| !r.is_empty())));
+    let timeline = v["timeline"].as_array().unwrap();
+    assert!(timeline.iter().all(|s| s["certified"].is_boolean()));
+    assert!(timeline
+        .iter()
+        .any(|s| s["state"] == "overlap" && s["certified"] == true));
+    assert!(!v["stats"]["branch"].as_str().unwrap().contains("assumed"));
+    let table = cli(&[&scene("issue-18-spin-1e300.toml")]);
+    let text = String::from_utf8_lossy(&table.stdout);
+    assert!(!text.contains("float"), "{text}");
+    assert!(!text.contains("collision-free over the span"), "{text}");
+    assert!(
+        text.contains("undecided") && text.contains("NOT complete"),
+        "{text}"
+    );
+
+    // Undecided both ways: collision_free is null, with a reason.
+    let out = cli(&[&scene("issue-18-frequency-1e10.toml"), "--json"]);
+    let v: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["collision_free"], Value::Null, "{v}");
+    assert!(v["collision_free_reason"]
+        .as_str()
+        .is_some_and(|r| !r.is_empty()));
+    assert_eq!(v["complete"], false);
+
+    // A certified rational scene: every segment certified, no gap.
+    let out = cli(&[&scene("paper-example-5-1.toml"), "--json"]);
+    let v: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["gaps"], serde_json::json!([]));
+    assert_eq!(v["collision_free_reason"], Value::Null);
+    assert!(v["timeline"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|s| s["certified"] == true));
+}

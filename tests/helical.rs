@@ -303,3 +303,381 @@ fn invalid_queries_are_typed_errors() {
         })
     );
 }
+
+// ---------------------------------------------------------------------------
+// Issue 18: fast spins and high frequencies. Nothing is assumed, the effort
+// is bounded, and every outcome says exactly what it did not prove.
+// ---------------------------------------------------------------------------
+
+/// The largest angle `|rate·t|`, `|frequency·t|` of the scene's helical
+/// bodies over the span (as `f64`; `inf` when huge).
+fn largest_angle(s: &Scene) -> f64 {
+    let t = s.span[0].to_f64().abs().max(s.span[1].to_f64().abs());
+    [&s.a, &s.b]
+        .iter()
+        .map(|b| match &b.motion {
+            Motion::Helical { rate, center, .. } => {
+                (rate.to_f64().abs() * t).max(center.frequency.to_f64().abs() * t)
+            }
+            _ => 0.0,
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The contract of issue 18 on one outcome: either complete and certified,
+/// or it says exactly what is not. States that are claimed proven are
+/// checked against an independent `f64` classification where libm's sin and
+/// cos of the angle are accurate.
+fn assert_honest(s: &Scene, out: &Outcome, first_only: bool) {
+    let (t0, t1) = (&out.span[0], &out.span[1]);
+    // 1. The segments and gaps follow each other in order without holes.
+    enum Piece<'a> {
+        Seg(&'a ccd_exact::Segment),
+        Gap(&'a ccd_exact::Gap),
+    }
+    let mut pieces: Vec<(Rat, Piece<'_>)> = out
+        .timeline
+        .iter()
+        .map(|seg| (seg.start.lo.clone(), Piece::Seg(seg)))
+        .chain(out.gaps.iter().map(|g| (g.lo.clone(), Piece::Gap(g))))
+        .collect();
+    pieces.sort_by(|x, y| x.0.cmp(&y.0));
+    assert!(!pieces.is_empty(), "{out:?}");
+    assert_eq!(&pieces[0].0, t0, "the timeline starts at t0: {out:?}");
+    for w in pieces.windows(2) {
+        match (&w[0].1, &w[1].1) {
+            (Piece::Seg(p), Piece::Seg(n)) => assert_eq!(p.end, n.start, "hole: {out:?}"),
+            (Piece::Seg(p), Piece::Gap(g)) => assert_eq!(p.end.hi, g.lo, "hole: {out:?}"),
+            (Piece::Gap(g), Piece::Seg(n)) => {
+                assert_eq!(
+                    n.start,
+                    ccd_exact::Instant::exact(g.hi.clone()),
+                    "hole: {out:?}"
+                )
+            }
+            (Piece::Gap(_), Piece::Gap(_)) => panic!("adjacent gaps not merged: {out:?}"),
+        }
+    }
+    let reaches_t1 = match &pieces[pieces.len() - 1].1 {
+        Piece::Seg(seg) => &seg.end.hi == t1,
+        Piece::Gap(g) => &g.hi == t1,
+    };
+    // 2. `complete` exactly when the timeline alone covers [t0, t1].
+    if !first_only {
+        assert_eq!(out.complete, out.gaps.is_empty() && reaches_t1, "{out:?}");
+        assert!(
+            reaches_t1,
+            "without --first-contact the span is tiled to t1"
+        );
+    }
+    for g in &out.gaps {
+        assert!(g.lo < g.hi && !g.reason.is_empty(), "{g:?}");
+        if let Some(w) = &g.witness {
+            assert!(
+                g.lo < w.t && w.t < g.hi && w.state != State::Separate,
+                "{g:?}"
+            );
+        }
+    }
+    // 3. The verdict is proven, or undecided with a reason.
+    let collision = out
+        .timeline
+        .iter()
+        .any(|seg| seg.certified && seg.state != State::Separate)
+        || out.gaps.iter().any(|g| g.witness.is_some());
+    let separation = out.complete
+        && out
+            .timeline
+            .iter()
+            .all(|seg| seg.certified && seg.state == State::Separate);
+    assert!(!(collision && separation), "{out:?}");
+    assert_eq!(out.collision_free, separation, "{out:?}");
+    match &out.undecided {
+        Some(why) => {
+            assert!(!collision && !separation && !why.is_empty(), "{out:?}");
+            assert!(
+                !out.gaps.is_empty() || out.timeline.iter().any(|seg| !seg.certified),
+                "undecided names something unproven: {out:?}"
+            );
+        }
+        None => assert!(collision || separation, "{out:?}"),
+    }
+    // 4. Contacts are the zero-length touch segments.
+    let touches: Vec<_> = out
+        .timeline
+        .iter()
+        .filter(|seg| seg.start == seg.end && seg.state == State::Touch)
+        .map(|seg| &seg.start)
+        .collect();
+    assert!(out.contacts.iter().all(|c| touches.contains(&c)), "{out:?}");
+    assert_eq!(
+        out.certified(),
+        out.gaps.is_empty()
+            && out.undecided.is_none()
+            && out
+                .timeline
+                .iter()
+                .all(|seg| seg.certified && seg.start.certified && seg.end.certified)
+            && out.contacts.iter().all(|c| c.certified)
+            && out.first_contact.as_ref().is_none_or(|c| c.certified)
+    );
+    // 5. Proven states agree with an independent classification.
+    if largest_angle(s) > 1e4 {
+        return;
+    }
+    let check = |t: f64, state: State, what: &str| {
+        let independent = State::from(classify_pair(
+            &placed_with_libm(&s.a, t),
+            &placed_with_libm(&s.b, t),
+        ));
+        assert_eq!(state, independent, "{what} at t = {t}: {out:?}");
+    };
+    for seg in out.timeline.iter().filter(|seg| seg.certified) {
+        let (lo, hi) = (seg.start.hi.to_f64(), seg.end.lo.to_f64());
+        if hi - lo > 1e-5 {
+            for k in 1..4 {
+                check(
+                    lo + (hi - lo) * f64::from(k) / 4.0,
+                    seg.state,
+                    "certified segment",
+                );
+            }
+        }
+    }
+    for g in &out.gaps {
+        if let Some(w) = &g.witness {
+            check(w.t.to_f64(), w.state, "witness");
+        }
+    }
+}
+
+fn issue_scene(rate: &str) -> Scene {
+    scene(&format!(
+        r#"
+        [a]
+        radii = [2, 1, "3/2"]
+        [a.motion]
+        kind = "helical"
+        axis = [0, 0, 1]
+        rate = "{rate}"
+        center = {{ base = [-4, "1/2", 0], velocity = [8, 0, 0] }}
+        [b]
+        radii = [1, "1/2", "1/3"]
+        "#
+    ))
+}
+
+/// Overlap at t = 1/2 is proven: a certified overlap segment holds it, or a
+/// gap's witness is there.
+fn overlap_at_half_is_proven(out: &Outcome) -> bool {
+    let half = Rat::from_frac(1, 2);
+    out.timeline.iter().any(|seg| {
+        seg.certified && seg.state == State::Overlap && seg.start.hi < half && half < seg.end.lo
+    }) || out
+        .gaps
+        .iter()
+        .any(|g| g.witness.as_ref().is_some_and(|w| w.t == half))
+}
+
+#[test]
+fn issue_18_scenes_claim_nothing_unproven() {
+    for name in ["issue-18-spin-1e300.toml", "issue-18-spin-1e4.toml"] {
+        let s = scene_file(name);
+        let out = enclosure(&s, &Options::default());
+        assert_honest(&s, &out, false);
+        // B's centre is inside A at t = 1/2 whatever the orientation.
+        assert!(
+            !out.collision_free && out.undecided.is_none(),
+            "{name}: {out:?}"
+        );
+        assert!(overlap_at_half_is_proven(&out), "{name}: {out:?}");
+        // Both ends are far apart: separate, proven.
+        let (first, last) = (&out.timeline[0], &out.timeline[out.timeline.len() - 1]);
+        assert!(first.certified && first.state == State::Separate, "{name}");
+        assert!(last.certified && last.state == State::Separate && last.end.hi == s.span[1]);
+        assert!(
+            !out.stats.branch.contains("assumed"),
+            "{}",
+            out.stats.branch
+        );
+    }
+}
+
+#[test]
+fn frequency_1e10_stops_at_its_budget_honestly() {
+    let s = scene_file("issue-18-frequency-1e10.toml");
+    let out = enclosure(&s, &Options::default());
+    assert_honest(&s, &out, false);
+    assert!(!out.collision_free);
+    // The same circle far from B: separate for every orientation and phase.
+    let far = scene(
+        r#"
+        [a]
+        radii = [2, 1, "3/2"]
+        motion = { kind = "helical", axis = [1, 1, 0], rate = "1e300", center = { base = [20, 0, 0], cos = [3, 0, 0], sin = [0, 3, 0], frequency = 1e10 } }
+        [b]
+        radii = [1, "1/2", "1/3"]
+        "#,
+    );
+    let out = enclosure(&far, &Options::default());
+    assert_honest(&far, &out, false);
+    assert!(
+        out.collision_free && out.complete && out.certified(),
+        "{out:?}"
+    );
+}
+
+#[test]
+fn fast_spin_family_with_answers_known_by_construction() {
+    for rate in ["3", "100", "1e300", "1e4000"] {
+        // B far from A: separate for every orientation.
+        let far = scene(&format!(
+            r#"
+            [a]
+            radii = [2, 1, "3/2"]
+            motion = {{ kind = "helical", axis = [1, 2, 3], rate = "{rate}", center = {{ base = [0, 0, 0], velocity = [1, 0, 0] }} }}
+            [b]
+            radii = [1, "1/2", "1/3"]
+            motion = {{ kind = "static", center = [10, 1, 0] }}
+            "#
+        ));
+        let out = enclosure(&far, &Options::default());
+        assert_honest(&far, &out, false);
+        assert!(
+            out.collision_free && out.complete && out.certified(),
+            "{rate}: {out:?}"
+        );
+        assert_eq!(states(&out), [State::Separate]);
+
+        // B's centre inside A at t = 1/2: overlap certain.
+        let inside = issue_scene(rate);
+        let out = enclosure(&inside, &Options::default());
+        assert_honest(&inside, &out, false);
+        assert!(
+            !out.collision_free && out.undecided.is_none(),
+            "{rate}: {out:?}"
+        );
+        assert!(overlap_at_half_is_proven(&out), "{rate}: {out:?}");
+
+        // A sphere spinning about any axis, and a spheroid spinning about
+        // its axis of symmetry (body y turned onto world z by the initial
+        // orientation): the spin is invisible, so the answer is the
+        // translation's, decided completely and certified.
+        for (radii, orientation, axis) in [
+            ("[1, 1, 1]", "[1, 0, 0, 0]", "[1, 2, 3]"),
+            ("[1, 2, 1]", "[1, 1, 0, 0]", "[0, 0, 5]"),
+        ] {
+            let helical = format!(
+                r#"
+                [a]
+                radii = {radii}
+                motion = {{ kind = "helical", orientation = {orientation}, axis = {axis}, rate = "{rate}", center = {{ base = [-4, "1/4", 0], velocity = [8, 0, 0] }} }}
+                [b]
+                radii = [2, 1, "1/2"]
+                "#
+            );
+            let translation = format!(
+                r#"
+                [a]
+                radii = {radii}
+                motion = {{ kind = "translation", orientation = {orientation}, center = [[-4, "1/4", 0], [4, "1/4", 0]] }}
+                [b]
+                radii = [2, 1, "1/2"]
+                "#
+            );
+            cross_check(&helical, &translation);
+            let out = enclosure(&scene(&helical), &Options::default());
+            assert!(out.complete && out.certified(), "{rate} {radii}: {out:?}");
+        }
+    }
+}
+
+#[test]
+fn a_visible_spin_is_kept() {
+    // An ellipsoid spinning about a non-symmetry axis keeps its rate; a
+    // spheroid about its symmetry axis loses it.
+    let s = scene(
+        r#"
+        [a]
+        radii = [2, 1, 1]
+        motion = { kind = "helical", axis = [0, 0, 1], rate = 5 }
+        [b]
+        radii = [1, 1, 2]
+        motion = { kind = "helical", axis = [0, 0, 1], rate = 5 }
+        "#,
+    );
+    let rate = |b: &Body| match &b.motion {
+        Motion::Helical { rate, .. } => rate.clone(),
+        _ => panic!("helical"),
+    };
+    assert_eq!(
+        rate(&ccd_enclosure::without_invisible_spin(&s.a)),
+        Rat::from(5)
+    );
+    assert_eq!(
+        rate(&ccd_enclosure::without_invisible_spin(&s.b)),
+        Rat::zero()
+    );
+}
+
+mod honesty {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn ratio() -> impl Strategy<Value = String> {
+        (1i64..=8, 1i64..=4).prop_map(|(p, q)| format!("\"{p}/{q}\""))
+    }
+
+    fn small() -> impl Strategy<Value = i64> {
+        -6i64..=6
+    }
+
+    /// Spin rates from slow to 1e300, including none.
+    fn rate() -> impl Strategy<Value = String> {
+        prop_oneof![
+            Just("0".to_string()),
+            (1i64..=9).prop_map(|r| r.to_string()),
+            (1u32..=3).prop_map(|k| format!("1e{k}")),
+            (10u32..=300).prop_map(|k| format!("1e{k}")),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 6, ..ProptestConfig::default() })]
+
+        /// Every helical outcome is either complete and certified or says
+        /// exactly what is not (gaps with reasons, unproven segments, an
+        /// undecided verdict with its reason), and nothing it calls proven
+        /// disagrees with an independent classification.
+        #[test]
+        fn every_helical_outcome_says_what_it_proved(
+            ra in [ratio(), ratio(), ratio()],
+            rb in [ratio(), ratio(), ratio()],
+            axis in (small(), small(), 1i64..=3),
+            rate in rate(),
+            base in [small(), small(), small()],
+            velocity in [small(), small(), small()],
+            periodic in (0i64..=3, prop_oneof![Just("0".to_string()), Just("2".to_string()), Just("1e10".to_string())]),
+            b_center in [small(), small(), small()],
+            first_only in any::<bool>(),
+        ) {
+            let s = scene(&format!(
+                r#"
+                [a]
+                radii = [{}, {}, {}]
+                motion = {{ kind = "helical", axis = [{}, {}, {}], rate = "{rate}", center = {{ base = [{}, {}, {}], velocity = [{}, {}, {}], cos = [{}, 0, 0], sin = [0, {}, 0], frequency = "{}" }} }}
+                [b]
+                radii = [{}, {}, {}]
+                motion = {{ kind = "static", center = [{}, {}, {}] }}
+                "#,
+                ra[0], ra[1], ra[2], axis.0, axis.1, axis.2,
+                base[0], base[1], base[2], velocity[0], velocity[1], velocity[2],
+                periodic.0, periodic.0, periodic.1,
+                rb[0], rb[1], rb[2], b_center[0], b_center[1], b_center[2],
+            ));
+            let options = Options { digits: 15, first_contact_only: first_only };
+            let out = enclosure(&s, &options);
+            assert_honest(&s, &out, first_only);
+        }
+    }
+}

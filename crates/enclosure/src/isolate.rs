@@ -61,6 +61,9 @@ pub enum Found<R> {
     /// precision while the derivative may vanish (subdividing further at
     /// this precision cannot help).
     Cluster(R),
+    /// Boxes left unexamined because [`Limits::max_boxes`] was reached
+    /// (merged when adjacent): nothing is known about the roots in them.
+    Undecided(R),
 }
 
 /// Limits of one subdivision.
@@ -97,13 +100,19 @@ struct Task<R> {
 }
 
 /// The roots of `p.target` in `domain`, in increasing order, at the
-/// precision of `domain`.
+/// precision of `domain`, and the number of boxes examined (at most
+/// `limits.max_boxes`; every box beyond is returned as
+/// [`Found::Undecided`], so the effort is bounded).
 ///
 /// Besides the enclosure and Newton tests of the module documentation, a
 /// box on which `q'` excludes zero (so `q` is strictly monotone) is settled
 /// by the signs at its ends: equal proven signs mean no root, opposite ones
 /// exactly one (intermediate value theorem), which is simple.
-pub fn isolate<R: Real + Trig>(p: &Problem<'_>, domain: &R, limits: &Limits) -> Vec<Found<R>> {
+pub fn isolate<R: Real + Trig>(
+    p: &Problem<'_>,
+    domain: &R,
+    limits: &Limits,
+) -> (Vec<Found<R>>, usize) {
     let prec = domain.precision();
     let value = |t: &R| p.value(t, prec);
     let mut out: Vec<Found<R>> = Vec::new();
@@ -131,11 +140,17 @@ pub fn isolate<R: Real + Trig>(p: &Problem<'_>, domain: &R, limits: &Limits) -> 
         out.push(Found::Cluster(x));
     };
     while let Some(Task { x, at_lo, at_hi }) = stack.pop() {
-        examined += 1;
-        if examined > limits.max_boxes {
-            push_cluster(&mut out, x);
+        if examined >= limits.max_boxes {
+            if let Some(Found::Undecided(c)) = out.last_mut() {
+                if c.intersect(&x).is_some() {
+                    *c = c.hull(&x);
+                    continue;
+                }
+            }
+            out.push(Found::Undecided(x));
             continue;
         }
+        examined += 1;
         let m = x.midpoint();
         // Second-order Taylor forms around m, with the point derivative
         // (tight) and the second derivative enclosed over X:
@@ -206,7 +221,7 @@ pub fn isolate<R: Real + Trig>(p: &Problem<'_>, domain: &R, limits: &Limits) -> 
             at_hi: fm,
         });
     }
-    out
+    (out, examined)
 }
 
 /// `hi − lo` exactly (`None` when unbounded).
@@ -295,7 +310,7 @@ mod tests {
             span: &span,
             target: Quantity::Sr0,
         };
-        let found = isolate(
+        let (found, _) = isolate(
             &p,
             &Interval::new(-0.01, 1.01),
             &Limits {
@@ -308,7 +323,7 @@ mod tests {
             .iter()
             .filter_map(|f| match f {
                 Found::Root(x) => Some(*x),
-                Found::Cluster(_) => None,
+                Found::Cluster(_) | Found::Undecided(_) => None,
             })
             .collect();
         // Centres meet along x: touch when |x| = 3, i.e. t = 1/8 and 7/8.

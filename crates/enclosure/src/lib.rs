@@ -75,5 +75,5 @@ pub use dyadic::{BigInterval, Dyadic};
 pub use error::EnclosureError;
 pub use placement::{centred_quadrics, invariants_at, quadric_at};
 pub use real::Real;
-pub use run::{run, Options};
+pub use run::{run, without_invisible_spin, Options};
 pub use trig::{sin_cos, Trig};

@@ -18,7 +18,7 @@
 //! `XᵀA(t)X < 0`, as on the exact path.
 
 use crate::trig::Trig;
-use ccd_arith::{Rat, RingOps};
+use ccd_arith::{Interval, Rat, RingOps};
 use ccd_motion::{Body, HelicalCenter, Motion, Quat, Vec3};
 use ccd_quadric::{
     affine_inverse, body_diagonal, characteristic, congruence, norm2, rigid_inverse,
@@ -203,6 +203,35 @@ fn inverse_placement<N: Trig>(motion: &Motion, span: &[Rat; 2], t: &N, prec: u32
     }
 }
 
+/// The centre `c(t)` of a body over the times `t`, enclosed in `f64`
+/// intervals (it does not depend on the spin: the helical centre is
+/// `base + velocity·t + cos·cos(ωt) + sin·sin(ωt)`, the rational kinds'
+/// centre their (rational) Bézier curve). `None` for the affine kind, whose
+/// radii do not bound its extent, or when a weight enclosure meets zero.
+/// With the bounding spheres of radius `max rᵢ` and the inscribed spheres of
+/// radius `min rᵢ` about these centres this proves separation or overlap
+/// whatever the orientation (`run`'s gap certificates).
+pub fn center_at(body: &Body, span: &[Rat; 2], t: &Interval) -> Option<[Interval; 3]> {
+    use crate::real::Real;
+    let u = || {
+        let inv_dt = (&span[1] - &span[0]).recip().unwrap_or_else(Rat::one);
+        t.minus(&Interval::from_rat(&span[0]))
+            .times(&Interval::from_rat(&inv_dt))
+    };
+    let divided = |(c, w): ([Interval; 3], Interval)| -> Option<[Interval; 3]> {
+        let v: [Option<Interval>; 3] = std::array::from_fn(|i| Real::div(&c[i], &w));
+        Some([v[0]?, v[1]?, v[2]?])
+    };
+    match &body.motion {
+        Motion::Static { center, .. } => Some(center.each_ref().map(Interval::from_rat)),
+        Motion::Translation { center, .. } | Motion::Rigid { center, .. } => {
+            divided(bezier(&center.points, center.weights.as_deref(), &u(), 53))
+        }
+        Motion::Affine { .. } => None,
+        Motion::Helical { center, .. } => Some(helical_center(center, t, 53)),
+    }
+}
+
 /// The quadric matrix `A(t)` of a body (interior `XᵀA(t)X < 0`), up to a
 /// positive factor, enclosed in the number type `N`.
 pub fn quadric_at<N: Trig>(body: &Body, span: &[Rat; 2], t: &N, prec: u32) -> Mat4<N> {
@@ -327,7 +356,6 @@ pub fn invariants_at<N: Trig>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ccd_arith::Interval;
 
     fn r(x: i64) -> Rat {
         Rat::from(x)

@@ -7,14 +7,16 @@
 use crate::dyadic::BigInterval;
 use crate::error::EnclosureError;
 use crate::isolate::{isolate, refine, width_rat, Found, Limits, Problem};
-use crate::placement::invariants_at;
+use crate::placement::{center_at, invariants_at};
 use crate::real::Real;
 use crate::signs::{Possible, Readings};
 use crate::trig::Trig;
-use ccd_arith::{Int, Interval, Rat};
+use ccd_arith::{Int, Interval, Rat, RingOps};
 use ccd_motion::{Body, Motion, Quat};
+use ccd_quadric::rotation_numerator;
 use ccd_subres::{classify, Configuration, Quantity, SignData};
-use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
+use ccd_timeline::{Gap, Instant, Outcome, Segment, State, Stats, Witness};
+use std::cell::Cell;
 
 /// What a query asks for (the same fields as the exact path's options).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -40,26 +42,53 @@ impl Options {
 }
 
 /// Precisions (bits) tried, in order, when an `f64` enclosure cannot decide
-/// a configuration at a point or on a box.
+/// a configuration at a point or on a box — on top of [`Query::extra_bits`],
+/// the bits of the largest angle `|rate·t|`, `|frequency·t|`.
 const DECISION_PRECISIONS: [u32; 2] = [128, 512];
 /// Evenly spaced samples used to test whether a quantity vanishes
 /// identically.
 const ZERO_TEST_SAMPLES: usize = 17;
-/// Bits used to confirm that a quantity vanishes identically.
+/// Bits used to confirm that a quantity is not identically zero (plus the
+/// angle's bits).
 const ZERO_TEST_BITS: u32 = 256;
 /// Minimal box width of the subdivision, relative to the span: `2^−36`.
 const MIN_WIDTH_LOG2: i32 = -36;
 /// The isolation domain extends the span by `2^−20` of its length on each
 /// side, so that roots at the ends are strictly inside some box.
 const MARGIN_LOG2: i32 = -20;
-/// At most this many boxes are examined in one isolation.
-const MAX_BOXES: usize = 50_000;
-/// Bits of the multi-precision subdivision of an `f64` cluster.
+/// Effort budget: at most this many `f64` boxes are examined in the
+/// isolation of the contacts; the boxes left are undecided gaps.
+const MAX_BOXES: usize = 20_000;
+/// Bits of the multi-precision subdivision of an `f64` cluster (plus the
+/// angle's bits).
 const CLUSTER_BITS: u32 = 128;
-/// At most this many boxes are examined when subdividing a cluster again.
+/// At most this many boxes are examined when subdividing one cluster again.
 const MAX_CLUSTER_BOXES: usize = 400;
+/// Effort budget over all the clusters of a query, in units of one box at
+/// [`CLUSTER_BITS`] bits (a box at `b` bits costs `⌈b/128⌉²` units);
+/// later clusters are reported unsubdivided.
+const MAX_CLUSTER_BOXES_TOTAL: usize = 500;
+/// Effort budget: at most this many candidate roots are decided and
+/// refined; the span after the last one is an undecided gap.
+const MAX_ROOTS: usize = 300;
+/// A cluster wider than `2^−16` of the span is not reported as one contact
+/// candidate but as an undecided gap (its roots were not separated).
+const CLUSTER_GAP_LOG2: i32 = -16;
 /// Largest precision tried when refining a certified root.
 const MAX_REFINEMENT_BITS: u32 = 1 << 15;
+/// Effort budget of the sphere certificates in the gaps: boxes in all.
+const MAX_SPHERE_BOXES: usize = 4_096;
+/// Sphere-certificate boxes are not narrower than `2^−14` of their gap.
+const SPHERE_MIN_WIDTH_LOG2: i64 = -14;
+/// Effort budget: instants probed for a proven non-separate state inside
+/// the gaps, in all.
+const MAX_WITNESS_PROBES: usize = 16;
+/// The angle's bits are capped here (an angle above `2^4096`, e.g. a rate
+/// of `1e4000`, is evaluated with 4096 extra bits only: its `sin`/`cos`
+/// stay wide and its pieces are decided by the sphere certificates or left
+/// as gaps; multi-precision work at more bits grows too fast to stay within
+/// seconds).
+const MAX_EXTRA_BITS: u32 = 1 << 12;
 
 /// What is known about `sr0 ≡ 0`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,10 +99,10 @@ enum Sr0 {
     /// generalisation: the quadratic parts of `A(t)` and `B(t)` are
     /// proportional for all t, so `λA + B` drops rank by 2 at one λ).
     Proven,
-    /// `sr0` encloses zero at every sample, even in multi-precision: taken
-    /// as identically zero, but not proven, so nothing that relies on it is
-    /// reported as certified.
-    Assumed,
+    /// `sr0` encloses zero at every sample, even in multi-precision, and no
+    /// structure proves `sr0 ≡ 0`: undecided. Nothing is assumed; the span
+    /// is a gap (filled only by the sphere certificates).
+    Undecided,
 }
 
 /// A contact candidate with its decision.
@@ -84,6 +113,30 @@ struct Contact {
     certified: bool,
 }
 
+/// What the isolation leaves between the pieces of constant state: a
+/// contact candidate, or a piece where the roots of the quantity were not
+/// separated within the effort budget.
+#[derive(Clone, Debug)]
+enum Break {
+    Contact(Contact),
+    Gap(Rat, Rat, &'static str),
+}
+
+impl Break {
+    fn lo(&self) -> &Rat {
+        match self {
+            Break::Contact(c) => &c.lo,
+            Break::Gap(lo, _, _) => lo,
+        }
+    }
+    fn hi(&self) -> &Rat {
+        match self {
+            Break::Contact(c) => &c.hi,
+            Break::Gap(_, hi, _) => hi,
+        }
+    }
+}
+
 /// The configuration at one instant and whether it is proven.
 #[derive(Clone, Copy, Debug)]
 struct Decided {
@@ -91,13 +144,20 @@ struct Decided {
     certified: bool,
 }
 
-/// One CCD query: bodies, span, the knowledge about `sr0`, the options.
+/// One CCD query: bodies, span, the knowledge about `sr0`, the options and
+/// what is left of the effort budget.
 struct Query<'a> {
     a: &'a Body,
     b: &'a Body,
     span: &'a [Rat; 2],
     sr0: Sr0,
     options: &'a Options,
+    /// Bits of the largest angle `|rate·t|`, `|frequency·t|` on the span,
+    /// added to every multi-precision evaluation, so that `sin(1e300·t)`
+    /// is enclosed tightly at a rational `t`.
+    extra_bits: u32,
+    /// Multi-precision cluster boxes left ([`MAX_CLUSTER_BOXES_TOTAL`]).
+    cluster_boxes: Cell<usize>,
 }
 
 fn validate(a: &Body, b: &Body, span: &[Rat; 2], options: &Options) -> Result<(), EnclosureError> {
@@ -190,6 +250,97 @@ fn sr0_vanishes_by_structure(a: &Body, b: &Body) -> bool {
     }
 }
 
+/// The body with its spin removed when the spin cannot move it: the helical
+/// rotation `Rot(axis, θ)` leaves the quadric invariant for every θ exactly
+/// when `Q = R₀·diag(r⁻²)·R₀ᵀ` (`R₀` the initial orientation) commutes with
+/// the cross-product matrix `K = [axis]×` (then it commutes with
+/// `Rot = I + sin θ·K/|a| + (1 − cos θ)·K²/|a|²`, and `R(t)·Q·R(t)ᵀ = Q`):
+/// a sphere, or a spheroid spinning about its axis of symmetry. `A(t)`
+/// depends on the rotation only through `R·diag(r⁻²)·Rᵀ`, so setting the
+/// rate to 0 is an identity of the motion's symbolic form, checked in exact
+/// rational arithmetic, not an approximation — and it takes the spin's
+/// `sin`/`cos` out of every enclosure, whatever the rate.
+pub fn without_invisible_spin(body: &Body) -> Body {
+    let Motion::Helical {
+        orientation,
+        axis,
+        rate,
+        center,
+    } = &body.motion
+    else {
+        return body.clone();
+    };
+    if rate.signum() == 0 {
+        return body.clone();
+    }
+    let m = rotation_numerator(orientation);
+    let inv2: [Rat; 3] = std::array::from_fn(|i| {
+        let r2 = &body.radii[i] * &body.radii[i];
+        r2.recip().unwrap_or_else(Rat::zero)
+    });
+    // Q = M·diag(r⁻²)·Mᵀ (a positive multiple of R₀·diag·R₀ᵀ).
+    let q: [[Rat; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..3).fold(Rat::zero(), |acc, k| {
+                &acc + &(&(&m[i][k] * &inv2[k]) * &m[j][k])
+            })
+        })
+    });
+    let z = Rat::zero();
+    let k: [[Rat; 3]; 3] = [
+        [z.clone(), -&axis[2], axis[1].clone()],
+        [axis[2].clone(), z.clone(), -&axis[0]],
+        [-&axis[1], axis[0].clone(), z],
+    ];
+    let mul = |x: &[[Rat; 3]; 3], y: &[[Rat; 3]; 3]| -> [[Rat; 3]; 3] {
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                (0..3).fold(Rat::zero(), |acc, l| &acc + &(&x[i][l] * &y[l][j]))
+            })
+        })
+    };
+    if mul(&q, &k) != mul(&k, &q) {
+        return body.clone();
+    }
+    Body {
+        radii: body.radii.clone(),
+        motion: Motion::Helical {
+            orientation: orientation.clone(),
+            axis: axis.clone(),
+            rate: Rat::zero(),
+            center: center.clone(),
+        },
+    }
+}
+
+/// An upper bound on `log2 |x|` (0 for `|x| <= 1`).
+fn log2_bound(x: &Rat) -> u64 {
+    if x.signum() == 0 {
+        return 0;
+    }
+    (x.numer().bits() + 1).saturating_sub(x.denom().bits().saturating_sub(1))
+}
+
+/// Bits of the largest angle `|rate·t|` or `|frequency·t|` of a helical
+/// body on the span (capped at [`MAX_EXTRA_BITS`]; 0 below `2^16`): the
+/// extra working precision that keeps `sin` and `cos` of the angle tight
+/// (an angle near `2^M` computed with `p` bits is known to about `2^(M−p)`).
+fn angle_bits(bodies: [&Body; 2], span: &[Rat; 2]) -> u32 {
+    let t = log2_bound(&span[0]).max(log2_bound(&span[1]));
+    let mut bits = 0u64;
+    for body in bodies {
+        if let Motion::Helical { rate, center, .. } = &body.motion {
+            bits = bits.max(log2_bound(rate) + t);
+            bits = bits.max(log2_bound(&center.frequency) + t);
+        }
+    }
+    // Angles below 2^16 cost at most 16 of the ≥ 128 multi-precision bits.
+    if bits <= 16 {
+        return 0;
+    }
+    bits.min(u64::from(MAX_EXTRA_BITS)) as u32
+}
+
 /// Evenly spaced dyadic samples strictly inside the span.
 fn samples(span: &[Rat; 2], n: usize) -> Vec<Rat> {
     let dt = &span[1] - &span[0];
@@ -198,8 +349,9 @@ fn samples(span: &[Rat; 2], n: usize) -> Vec<Rat> {
         .collect()
 }
 
-/// Whether `q` is proven nonzero at some sample (f64, then multi-precision).
-fn nonzero_somewhere(p: &Problem<'_>, span: &[Rat; 2]) -> Option<Rat> {
+/// Whether `q` is proven nonzero at some sample (f64, then multi-precision
+/// with `extra_bits` more bits).
+fn nonzero_somewhere(p: &Problem<'_>, span: &[Rat; 2], extra_bits: u32) -> Option<Rat> {
     let pts = samples(span, ZERO_TEST_SAMPLES);
     for t in &pts {
         if p.value(&Interval::from_rat(t), 53)
@@ -209,8 +361,9 @@ fn nonzero_somewhere(p: &Problem<'_>, span: &[Rat; 2]) -> Option<Rat> {
             return Some(t.clone());
         }
     }
+    let bits = ZERO_TEST_BITS + extra_bits;
     for t in pts.iter().step_by(4) {
-        let v = p.value(&BigInterval::from_rat(t, ZERO_TEST_BITS), ZERO_TEST_BITS);
+        let v = p.value(&BigInterval::from_rat(t, bits), bits);
         if v.sign().is_some_and(|s| s != 0) {
             return Some(t.clone());
         }
@@ -229,11 +382,12 @@ impl Query<'_> {
     }
 
     /// The readings of Theorem 3.10 over `t` (a point or a box), with the
-    /// quantities in `zero` known to vanish there.
+    /// quantities in `zero` known to vanish there (and `sr0` when it is
+    /// proven to vanish identically).
     fn readings<R: Real + Trig>(&self, t: &R, zero: &[Quantity]) -> Readings {
         let (f, inv) = invariants_at(self.a, self.b, self.span, t, t.precision());
         let mut r = Readings::of(&f, &inv);
-        if self.sr0 != Sr0::NotZero {
+        if self.sr0 == Sr0::Proven {
             r = r.with_zero(Quantity::Sr0);
         }
         for q in zero {
@@ -243,7 +397,7 @@ impl Query<'_> {
     }
 
     /// The possible configurations over `[lo, hi]`: `f64` first, then
-    /// multi-precision while undecided.
+    /// multi-precision (with the angle's bits on top) while undecided.
     fn possible(&self, lo: &Rat, hi: &Rat, zero: &[Quantity]) -> Possible {
         let box64 = Interval::from_rat(lo).hull(&Interval::from_rat(hi));
         let mut p = self.readings(&box64, zero).possible();
@@ -251,23 +405,23 @@ impl Query<'_> {
             if p.single().is_some() {
                 break;
             }
+            let bits = bits + self.extra_bits;
             let bx = BigInterval::from_rat(lo, bits).hull(&BigInterval::from_rat(hi, bits));
             p = self.readings(&bx, zero).possible();
         }
         p
     }
 
-    /// The configuration at the rational instant `t`.
+    /// The configuration at the rational instant `t`: proven, or a best
+    /// guess from the multi-precision midpoints marked uncertified.
     fn state_at(&self, t: &Rat) -> Decided {
         if let Some(c) = self.possible(t, t, &[]).single() {
             return Decided {
                 state: State::from(c),
-                certified: self.sr0 != Sr0::Assumed,
+                certified: true,
             };
         }
-        // Undecided even in multi-precision: a best guess from the
-        // midpoints, reported uncertified.
-        let bits = DECISION_PRECISIONS[DECISION_PRECISIONS.len() - 1];
+        let bits = DECISION_PRECISIONS[DECISION_PRECISIONS.len() - 1] + self.extra_bits;
         let tt = BigInterval::from_rat(t, bits);
         let (f, inv) = invariants_at(self.a, self.b, self.span, &tt, bits);
         let sign = |x: &BigInterval| {
@@ -281,7 +435,7 @@ impl Query<'_> {
             }
         };
         let mut s = SignData::from_invariants(&inv, &f, sign);
-        if self.sr0 != Sr0::NotZero {
+        if self.sr0 == Sr0::Proven {
             s.sr0 = 0;
         }
         Decided {
@@ -300,6 +454,7 @@ impl Query<'_> {
             .max(dt);
         let ratio = (scale / dt).log2().max(0.0);
         (self.options.digits as f64 * std::f64::consts::LOG2_10 + ratio + 96.0).ceil() as u32
+            + self.extra_bits
     }
 
     /// A certified simple root of `target` in the box `x`: decided (touch
@@ -315,7 +470,7 @@ impl Query<'_> {
         let fine = refine(&p, x, width);
         let (mut lo, mut hi) = (fine.lo_rat()?, fine.hi_rat()?);
         let mut bits = self.refinement_bits().max(fine.precision());
-        while &(&hi - &lo) > width && bits <= MAX_REFINEMENT_BITS {
+        while &(&hi - &lo) > width && bits <= MAX_REFINEMENT_BITS + self.extra_bits {
             let start = BigInterval::from_rat(&lo, bits).hull(&BigInterval::from_rat(&hi, bits));
             let big = refine(&p, start, width);
             let w = width_rat(&big).unwrap_or_else(|| &hi - &lo);
@@ -326,59 +481,85 @@ impl Query<'_> {
         }
         let decided = self.possible(&lo, &hi, &zero);
         decided.touch.then(|| Contact {
-            certified: decided.single() == Some(Configuration::ExternalTouch)
-                && self.sr0 != Sr0::Assumed,
+            certified: decided.single() == Some(Configuration::ExternalTouch),
             lo,
             hi,
         })
     }
 
-    /// The contacts among what subdivision found: certified roots are
-    /// decided and refined; a cluster that is consistent with a touch is
-    /// subdivided again in multi-precision (when `escalate`), and what still
-    /// cannot be proven is reported uncertified.
+    /// The breaks among what subdivision found: certified roots are decided
+    /// and refined; a cluster that is consistent with a touch is subdivided
+    /// again in multi-precision (when `escalate` and the budget allows), and
+    /// what still cannot be proven is reported uncertified — as one contact
+    /// candidate when narrow, as a gap when wider than `2^−16` of the span;
+    /// unexamined boxes are gaps.
     fn examine<R: Real + Trig>(
         &self,
         target: Quantity,
         found: Found<R>,
         width: &Rat,
         escalate: bool,
-        out: &mut Vec<Contact>,
+        out: &mut Vec<Break>,
     ) {
+        let ends = |x: &R| Some((x.lo_rat()?, x.hi_rat()?));
+        let dt = &self.span[1] - &self.span[0];
         match found {
-            Found::Root(x) => out.extend(self.root_contact(target, x, width)),
+            Found::Root(x) => out.extend(self.root_contact(target, x, width).map(Break::Contact)),
+            Found::Undecided(x) => {
+                let (lo, hi) =
+                    ends(&x).unwrap_or_else(|| (self.span[0].clone(), self.span[1].clone()));
+                out.push(Break::Gap(
+                    lo,
+                    hi,
+                    "effort budget reached before the roots were isolated",
+                ));
+            }
             Found::Cluster(x) => {
-                let (Some(lo), Some(hi)) = (x.lo_rat(), x.hi_rat()) else {
+                let Some((lo, hi)) = ends(&x) else {
+                    out.push(Break::Gap(
+                        self.span[0].clone(),
+                        self.span[1].clone(),
+                        "enclosures unbounded",
+                    ));
                     return;
                 };
                 if !self.possible(&lo, &hi, &[target]).touch {
+                    // No touch is possible anywhere in it: no state change.
                     return;
                 }
-                if !escalate {
-                    out.push(Contact {
-                        lo,
-                        hi,
-                        certified: false,
-                    });
+                let left = self.cluster_boxes.get();
+                if !escalate || left == 0 {
+                    if &hi - &lo > dt.mul_pow2(i64::from(CLUSTER_GAP_LOG2)) {
+                        out.push(Break::Gap(lo, hi, "roots not separated (cluster)"));
+                    } else {
+                        out.push(Break::Contact(Contact {
+                            lo,
+                            hi,
+                            certified: false,
+                        }));
+                    }
                     return;
                 }
-                let bx = BigInterval::from_rat(&lo, CLUSTER_BITS)
-                    .hull(&BigInterval::from_rat(&hi, CLUSTER_BITS));
-                let dt = (&self.span[1] - &self.span[0]).to_f64();
+                let bits = CLUSTER_BITS + self.extra_bits;
+                let cost = (bits.div_ceil(CLUSTER_BITS) as usize).pow(2);
+                let bx = BigInterval::from_rat(&lo, bits).hull(&BigInterval::from_rat(&hi, bits));
                 let limits = Limits {
-                    min_width: dt * 2f64.powi(-(CLUSTER_BITS as i32) + 24),
-                    max_boxes: MAX_CLUSTER_BOXES,
+                    min_width: dt.to_f64() * 2f64.powi(-(CLUSTER_BITS as i32) + 24),
+                    max_boxes: MAX_CLUSTER_BOXES.min(left / cost).max(1),
                     pieces: 2,
                 };
-                for f in isolate(&self.problem(target), &bx, &limits) {
+                let (found, used) = isolate(&self.problem(target), &bx, &limits);
+                self.cluster_boxes.set(left.saturating_sub(used * cost));
+                for f in found {
                     self.examine(target, f, width, false, out);
                 }
             }
         }
     }
 
-    /// Contacts from the roots of `target` in the span, in order.
-    fn contacts(&self, target: Quantity, stats: &mut Stats) -> Vec<Contact> {
+    /// Contacts and gaps from the roots of `target` in the span, in order
+    /// (disjoint, clipped to the span; adjacent gaps merged).
+    fn breaks(&self, target: Quantity, stats: &mut Stats) -> Vec<Break> {
         let (t0, t1) = (&self.span[0], &self.span[1]);
         let dt = (t1 - t0).to_f64();
         let margin = dt * 2f64.powi(MARGIN_LOG2);
@@ -392,27 +573,63 @@ impl Query<'_> {
             pieces: 32,
         };
         let width = &(t1 - t0) / &Rat::from_int(Int::pow10(self.options.digits));
-        let mut out: Vec<Contact> = Vec::new();
-        let all = isolate(&self.problem(target), &domain, &limits);
-        for found in all {
+        let mut out: Vec<Break> = Vec::new();
+        let (all, _) = isolate(&self.problem(target), &domain, &limits);
+        let mut roots = 0usize;
+        let mut found = all.into_iter();
+        while let Some(f) = found.next() {
             stats.candidates += 1;
             let mut here = Vec::new();
-            self.examine(target, found, &width, true, &mut here);
+            if roots >= MAX_ROOTS && !matches!(f, Found::Undecided(_)) {
+                // Budget of decided roots spent: the rest is one gap.
+                let lo = ends_of(&f).map_or_else(|| t0.clone(), |(lo, _)| lo);
+                let hi = found
+                    .by_ref()
+                    .last()
+                    .and_then(|l| ends_of(&l).map(|(_, hi)| hi))
+                    .or_else(|| ends_of(&f).map(|(_, hi)| hi))
+                    .unwrap_or_else(|| t1.clone());
+                here.push(Break::Gap(lo, hi, "effort budget of decided roots reached"));
+            } else {
+                if matches!(f, Found::Root(_)) {
+                    roots += 1;
+                }
+                self.examine(target, f, &width, true, &mut here);
+            }
             for mut c in here {
                 // Clip to the span; an enclosure reaching past an end may
                 // hold a root outside the span, so it is no longer certified.
-                if &c.hi < t0 || &c.lo > t1 {
+                if c.hi() < t0 || c.lo() > t1 {
                     continue;
                 }
-                if &c.lo < t0 {
-                    c.lo = t0.clone();
-                    c.certified = false;
+                match &mut c {
+                    Break::Contact(c) => {
+                        if &c.lo < t0 {
+                            c.lo = t0.clone();
+                            c.certified = false;
+                        }
+                        if &c.hi > t1 {
+                            c.hi = t1.clone();
+                            c.certified = false;
+                        }
+                    }
+                    Break::Gap(lo, hi, _) => {
+                        if &*lo < t0 {
+                            *lo = t0.clone();
+                        }
+                        if &*hi > t1 {
+                            *hi = t1.clone();
+                        }
+                    }
                 }
-                if &c.hi > t1 {
-                    c.hi = t1.clone();
-                    c.certified = false;
+                match (out.last_mut(), c) {
+                    (Some(Break::Gap(_, hi, _)), Break::Gap(lo2, hi2, _)) if lo2 <= *hi => {
+                        if hi2 > *hi {
+                            *hi = hi2;
+                        }
+                    }
+                    (_, c) => out.push(c),
                 }
-                out.push(c);
             }
             if self.options.first_contact_only && !out.is_empty() {
                 out.truncate(1);
@@ -421,6 +638,14 @@ impl Query<'_> {
         }
         out
     }
+}
+
+/// The exact ends of a found box.
+fn ends_of<R: Real>(f: &Found<R>) -> Option<(Rat, Rat)> {
+    let x = match f {
+        Found::Root(x) | Found::Cluster(x) | Found::Undecided(x) => x,
+    };
+    Some((x.lo_rat()?, x.hi_rat()?))
 }
 
 /// A rational strictly inside `(lo, hi)` with a small denominator.
@@ -433,14 +658,165 @@ fn instant(lo: Rat, hi: Rat, certified: bool) -> Instant {
     Instant { lo, hi, certified }
 }
 
+/// One entry of the timeline under construction, in time order.
+#[derive(Clone, Debug)]
+enum Item {
+    Segment(Segment),
+    Gap(Gap),
+}
+
+/// Separation or overlap proven from the centres alone, whatever the
+/// orientations: each body lies in the ball of radius `max rᵢ` about its
+/// centre and contains the ball of radius `min rᵢ`, so
+/// `|c_a − c_b| > max r(a) + max r(b)` proves *separate* and
+/// `|c_a − c_b| < max(min r(a), min r(b))` (one centre inside the other
+/// body) proves *overlap*. The distance is enclosed over a box of times
+/// (`f64` intervals, outward rounded); `None` when neither is proven (or a
+/// body is affine).
+fn sphere_state(a: &Body, b: &Body, span: &[Rat; 2], lo: &Rat, hi: &Rat) -> Option<State> {
+    let t = Interval::from_rat(lo).hull(&Interval::from_rat(hi));
+    let (ca, cb) = (center_at(a, span, &t)?, center_at(b, span, &t)?);
+    let d2 = (0..3).fold(Interval::point(0.0), |acc, i| {
+        let d = ca[i].minus(&cb[i]);
+        let sq = d.times(&d);
+        acc.plus(&Interval::new(sq.lo.max(0.0), sq.hi))
+    });
+    let max = |b: &Body| b.radii.iter().max().cloned().unwrap_or_else(Rat::zero);
+    let min = |b: &Body| b.radii.iter().min().cloned().unwrap_or_else(Rat::zero);
+    let outer = &max(a) + &max(b);
+    let inner = min(a).max(min(b));
+    if d2.lo > Interval::from_rat(&(&outer * &outer)).hi {
+        Some(State::Separate)
+    } else if d2.hi < Interval::from_rat(&(&inner * &inner)).lo {
+        Some(State::Overlap)
+    } else {
+        None
+    }
+}
+
+/// A gap cut into pieces proven by [`sphere_state`] (by bisection within
+/// the budget) and the pieces left undecided, in order, adjacent pieces of
+/// one kind merged.
+fn sphere_pieces(
+    q: &Query<'_>,
+    lo: &Rat,
+    hi: &Rat,
+    budget: &mut usize,
+) -> Vec<(Rat, Rat, Option<State>)> {
+    let min_width = (hi - lo).mul_pow2(SPHERE_MIN_WIDTH_LOG2);
+    let mut out: Vec<(Rat, Rat, Option<State>)> = Vec::new();
+    let mut stack = vec![(lo.clone(), hi.clone())];
+    let point = |t: &Rat| sphere_state(q.a, q.b, q.span, t, t).is_some();
+    while let Some((l, h)) = stack.pop() {
+        let state = if *budget > 0 {
+            *budget -= 1;
+            sphere_state(q.a, q.b, q.span, &l, &h)
+        } else {
+            None
+        };
+        // Bisect only where something is provable at a point of the box
+        // (an end or the midpoint): the effort goes to the boundaries of
+        // the provable pieces, not into stretches where nothing is.
+        let m = Rat::midpoint(&l, &h);
+        let promising = || point(&l) || point(&m) || point(&h);
+        if state.is_none() && *budget > 0 && &h - &l > min_width && promising() {
+            stack.push((m.clone(), h));
+            stack.push((l, m));
+            continue;
+        }
+        match out.last_mut() {
+            Some((_, end, s)) if *s == state && *end == l => *end = h,
+            _ => out.push((l, h, state)),
+        }
+    }
+    out
+}
+
+/// The state of a piece `(lo, hi)` between breakpoints, read at a sample
+/// inside (Theorem 5.1: no root of the isolated quantity lies in it).
+fn piece(q: &Query<'_>, start: Instant, end: Instant) -> Segment {
+    let d = q.state_at(&sample_between(&start.hi, &end.lo));
+    Segment {
+        state: d.state,
+        start,
+        end,
+        certified: d.certified,
+    }
+}
+
+/// Fills the gaps with what the sphere certificates prove, probes the
+/// remaining gaps for a proven non-separate instant (a witness), and merges
+/// neighbouring segments of one state.
+fn settle_gaps(q: &Query<'_>, items: Vec<Item>) -> Vec<Item> {
+    let mut sphere_budget = MAX_SPHERE_BOXES;
+    let mut probes = MAX_WITNESS_PROBES;
+    let mut out: Vec<Item> = Vec::new();
+    let push = |out: &mut Vec<Item>, item: Item| {
+        if let (Some(Item::Segment(prev)), Item::Segment(next)) = (out.last_mut(), &item) {
+            let long = |s: &Segment| s.start != s.end;
+            if long(prev) && long(next) && prev.state == next.state && prev.end == next.start {
+                prev.end = next.end.clone();
+                prev.certified &= next.certified;
+                return;
+            }
+        }
+        out.push(item);
+    };
+    for item in items {
+        let Item::Gap(g) = item else {
+            push(&mut out, item);
+            continue;
+        };
+        for (lo, hi, state) in sphere_pieces(q, &g.lo, &g.hi, &mut sphere_budget) {
+            match state {
+                Some(state) => push(
+                    &mut out,
+                    Item::Segment(Segment {
+                        state,
+                        start: Instant::exact(lo),
+                        end: Instant::exact(hi),
+                        certified: true,
+                    }),
+                ),
+                None => {
+                    let mut witness = None;
+                    if probes > 0 {
+                        probes -= 1;
+                        let t = sample_between(&lo, &hi);
+                        let d = q.state_at(&t);
+                        if d.certified && d.state != State::Separate {
+                            witness = Some(Witness { t, state: d.state });
+                        }
+                    }
+                    push(
+                        &mut out,
+                        Item::Gap(Gap {
+                            lo,
+                            hi,
+                            reason: g.reason.clone(),
+                            witness,
+                        }),
+                    );
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Runs continuous collision detection for two bodies over `span` on the
 /// interval path (any motion kinds, in particular `helical`).
 ///
 /// Contact instants come with exact rational enclosures, certified when
 /// the root of `sr0` (or `sr11`) is proven simple and unique in its
 /// enclosure by interval Newton and Theorem 3.10(2) is decided on the
-/// enclosure; otherwise they are reported with `certified: false` (see
-/// `docs/helical.md` for the exact rules).
+/// enclosure; otherwise they are reported with `certified: false`. The
+/// effort is bounded (the budgets of `docs/helical.md`): what is not decided
+/// within it is an [`ccd_timeline::Gap`], filled where possible by sphere
+/// certificates, and the outcome is then not `complete`; `collision_free`
+/// is `true` only when separation over the whole span is proven, and
+/// [`Outcome::undecided`] says why when neither separation nor a collision
+/// is proven.
 pub fn run(
     a: &Body,
     b: &Body,
@@ -448,8 +824,10 @@ pub fn run(
     options: &Options,
 ) -> Result<Outcome, EnclosureError> {
     validate(a, b, span, options)?;
+    let (a, b) = (&without_invisible_spin(a), &without_invisible_spin(b));
     let (t0, t1) = (span[0].clone(), span[1].clone());
     let mut stats = Stats::default();
+    let extra_bits = angle_bits([a, b], span);
     let sr0 = if sr0_vanishes_by_structure(a, b) {
         Sr0::Proven
     } else {
@@ -459,9 +837,9 @@ pub fn run(
             span,
             target: Quantity::Sr0,
         };
-        match nonzero_somewhere(&p, span) {
+        match nonzero_somewhere(&p, span, extra_bits) {
             Some(_) => Sr0::NotZero,
-            None => Sr0::Assumed,
+            None => Sr0::Undecided,
         }
     };
     let q = Query {
@@ -470,28 +848,33 @@ pub fn run(
         span,
         sr0,
         options,
+        extra_bits,
+        cluster_boxes: Cell::new(MAX_CLUSTER_BOXES_TOTAL),
     };
     let first_only = options.first_contact_only;
     let start0 = q.state_at(&t0);
 
-    // The whole span in one state (Theorems 5.5 and 5.6), or the contacts.
+    // The whole span in one state (Theorem 5.5), or the breaks.
     let mut throughout: Option<Decided> = None;
-    let mut contacts: Vec<Contact> = Vec::new();
+    let mut breaks: Vec<Break> = Vec::new();
     let stop_early = first_only && start0.state != State::Separate;
+    let whole = |why: &'static str| vec![Break::Gap(t0.clone(), t1.clone(), why)];
     match sr0 {
         Sr0::NotZero => {
             stats.branch = "interval: sr0";
             if !stop_early {
-                contacts = q.contacts(Quantity::Sr0, &mut stats);
+                breaks = q.breaks(Quantity::Sr0, &mut stats);
             }
         }
-        Sr0::Proven | Sr0::Assumed => {
-            stats.branch = if sr0 == Sr0::Proven {
-                "interval: sr0 = 0 (structure), sr11"
-            } else {
-                "interval: sr0 = 0 (assumed), sr11"
-            };
-            match nonzero_somewhere(&q.problem(Quantity::Sr11), span) {
+        Sr0::Undecided => {
+            stats.branch = "interval: sr0 undecided";
+            if !stop_early {
+                breaks = whole("sr0 neither proven nonzero at a sample nor identically zero");
+            }
+        }
+        Sr0::Proven => {
+            stats.branch = "interval: sr0 = 0 (structure), sr11";
+            match nonzero_somewhere(&q.problem(Quantity::Sr11), span, extra_bits) {
                 Some(delta) => {
                     // Theorem 5.5: touching at one non-root of sr11 means
                     // touching throughout.
@@ -499,111 +882,215 @@ pub fn run(
                     if at.state == State::Touch {
                         throughout = Some(at);
                     } else if !stop_early {
-                        contacts = q.contacts(Quantity::Sr11, &mut stats);
+                        breaks = q.breaks(Quantity::Sr11, &mut stats);
                     }
                 }
                 None => {
-                    // Theorem 5.6: the state at t0 holds throughout; sr11 ≡ 0
-                    // is only observed, not proven.
-                    stats.branch = "interval: sr0 = 0, sr11 = 0 (assumed)";
-                    throughout = Some(Decided {
-                        certified: false,
-                        ..start0
-                    });
+                    // Theorem 5.6 would need sr11 ≡ 0, which is only
+                    // observed here: nothing is assumed.
+                    stats.branch = "interval: sr0 = 0 (structure), sr11 undecided";
+                    if !stop_early {
+                        breaks =
+                            whole("sr11 neither proven nonzero at a sample nor identically zero");
+                    }
                 }
             }
         }
     }
 
     let start = instant(t0.clone(), t0.clone(), start0.certified);
-    let end = Instant::exact(t1.clone());
-    let mut timeline: Vec<Segment> = Vec::new();
-    let mut contact_instants: Vec<Instant> = Vec::new();
-    let complete;
+    let mut items: Vec<Item> = Vec::new();
     if let Some(d) = throughout {
-        let e = instant(t1.clone(), t1.clone(), d.certified);
-        let s = instant(t0.clone(), t0.clone(), d.certified);
-        timeline.push(Segment {
+        items.push(Item::Segment(Segment {
             state: d.state,
-            start: s,
-            end: e,
-        });
-        complete = true;
+            start: Instant::exact(t0.clone()),
+            end: Instant::exact(t1.clone()),
+            certified: d.certified,
+        }));
     } else if stop_early {
-        timeline.push(Segment {
+        items.push(Item::Segment(Segment {
             state: start0.state,
             start: start.clone(),
             end: start.clone(),
-        });
-        complete = false;
+            certified: start0.certified,
+        }));
     } else {
-        // Breakpoints: t0, the contacts, t1 (a contact reaching an end
-        // replaces it).
-        let mut points: Vec<(Instant, bool)> = Vec::new();
-        if contacts.first().is_none_or(|c| c.lo != t0) {
-            points.push((start.clone(), false));
-        }
-        points.extend(
-            contacts
-                .iter()
-                .map(|c| (instant(c.lo.clone(), c.hi.clone(), c.certified), true)),
-        );
-        let reached_end = !first_only || contacts.is_empty();
-        if contacts.last().is_none_or(|c| c.hi != t1) && reached_end {
-            points.push((end.clone(), false));
-        }
-        // States of the open pieces; an undecided piece makes its bounding
-        // instants uncertified.
-        let mut pieces: Vec<Option<State>> = Vec::new();
-        for k in 0..points.len().saturating_sub(1) {
-            let (lo, hi) = (&points[k].0.hi, &points[k + 1].0.lo);
-            if lo >= hi {
-                pieces.push(None);
-                continue;
+        // Breakpoints t0, the breaks, t1 (a break reaching an end replaces
+        // it); a first-contact query stops at its first break.
+        let mut prev: Option<Instant> =
+            (breaks.first().is_none_or(|c| c.lo() > &t0)).then(|| Instant::exact(t0.clone()));
+        for br in &breaks {
+            let (entry, exit) = match br {
+                Break::Contact(c) => {
+                    let i = instant(c.lo.clone(), c.hi.clone(), c.certified);
+                    (i.clone(), i)
+                }
+                Break::Gap(lo, hi, _) => (Instant::exact(lo.clone()), Instant::exact(hi.clone())),
+            };
+            if let Some(p) = prev.take() {
+                if p.hi < entry.lo {
+                    items.push(Item::Segment(piece(&q, p, entry.clone())));
+                }
             }
-            let d = q.state_at(&sample_between(lo, hi));
-            if !d.certified {
-                points[k].0.certified = false;
-                points[k + 1].0.certified = false;
-            }
-            pieces.push(Some(d.state));
-        }
-        for (k, (p, is_contact)) in points.iter().enumerate() {
-            if *is_contact {
-                timeline.push(Segment {
+            match br {
+                Break::Contact(_) => items.push(Item::Segment(Segment {
                     state: State::Touch,
-                    start: p.clone(),
-                    end: p.clone(),
-                });
-                contact_instants.push(p.clone());
+                    start: entry.clone(),
+                    end: entry,
+                    certified: exit.certified,
+                })),
+                Break::Gap(lo, hi, why) => items.push(Item::Gap(Gap {
+                    lo: lo.clone(),
+                    hi: hi.clone(),
+                    reason: (*why).to_string(),
+                    witness: None,
+                })),
             }
-            if let (Some(Some(state)), Some((next, _))) = (pieces.get(k), points.get(k + 1)) {
-                timeline.push(Segment {
-                    state: *state,
-                    start: p.clone(),
-                    end: next.clone(),
-                });
+            prev = Some(exit);
+        }
+        let reached_end = !first_only || breaks.is_empty();
+        if let (Some(p), true) = (prev, reached_end) {
+            if p.hi < t1 {
+                items.push(Item::Segment(piece(&q, p, Instant::exact(t1.clone()))));
             }
         }
-        complete = reached_end;
     }
+    let items = settle_gaps(&q, items);
 
-    let first_contact = if start0.state != State::Separate {
-        Some(start)
-    } else {
-        timeline
+    let mut timeline: Vec<Segment> = Vec::new();
+    let mut gaps: Vec<Gap> = Vec::new();
+    let mut first_contact: Option<Instant> = None;
+    let mut clean = true; // everything so far proven separate
+    for item in items {
+        match item {
+            Item::Segment(s) => {
+                if first_contact.is_none() && s.state != State::Separate {
+                    first_contact = Some(Instant {
+                        certified: clean && s.certified && s.start.certified,
+                        ..s.start.clone()
+                    });
+                }
+                clean &= s.certified;
+                timeline.push(s);
+            }
+            Item::Gap(g) => {
+                if let (None, Some(w)) = (&first_contact, &g.witness) {
+                    first_contact = Some(instant(g.lo.clone(), w.t.clone(), false));
+                }
+                clean = false;
+                gaps.push(g);
+            }
+        }
+    }
+    let contacts: Vec<Instant> = timeline
+        .iter()
+        .filter(|s| {
+            s.start == s.end && s.state == State::Touch && !(stop_early && s.start.lo == t0)
+        })
+        .map(|s| s.start.clone())
+        .collect();
+    let covered_to_end = timeline.last().is_some_and(|s| s.end.hi == t1);
+    // Complete exactly when the timeline tiles [t0, t1] (a first-contact
+    // query stops at its first break, short of t1 unless its gap was filled).
+    let complete = gaps.is_empty() && covered_to_end && !stop_early;
+    let separation = complete
+        && timeline
             .iter()
-            .find(|s| s.state != State::Separate)
-            .map(|s| s.start.clone())
-    };
+            .all(|s| s.certified && s.state == State::Separate);
+    let collision = timeline
+        .iter()
+        .any(|s| s.certified && s.state != State::Separate)
+        || gaps.iter().any(|g| g.witness.is_some());
+    let undecided = (!separation && !collision).then(|| {
+        let mut why: Vec<String> = Vec::new();
+        if !gaps.is_empty() {
+            why.push(format!(
+                "{} piece(s) of the span undecided (see gaps)",
+                gaps.len()
+            ));
+        }
+        if timeline.iter().any(|s| !s.certified) {
+            why.push("the state of a segment or a contact candidate is not proven".into());
+        }
+        if why.is_empty() {
+            why.push("the timeline stops before t1".into());
+        }
+        why.join("; ")
+    });
     Ok(Outcome {
         span: span.clone(),
-        collision_free: first_contact.is_none() && complete,
+        collision_free: separation,
+        undecided,
         first_contact,
-        contacts: contact_instants,
+        contacts,
         timeline,
+        gaps,
         complete,
         stats,
         geometry: Vec::new(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ccd_motion::HelicalCenter;
+
+    fn spinning(rate: Rat, frequency: Rat) -> Body {
+        let z = || [Rat::zero(), Rat::zero(), Rat::zero()];
+        Body {
+            radii: [Rat::from(2), Rat::from(1), Rat::from(1)],
+            motion: Motion::Helical {
+                orientation: Motion::identity(),
+                axis: [Rat::zero(), Rat::zero(), Rat::one()],
+                rate,
+                center: HelicalCenter {
+                    base: z(),
+                    velocity: z(),
+                    cos: [Rat::one(), Rat::zero(), Rat::zero()],
+                    sin: z(),
+                    frequency,
+                },
+            },
+        }
+    }
+
+    #[test]
+    fn log2_bound_is_an_upper_bound() {
+        for (p, q) in [
+            (1i64, 1i64),
+            (3, 2),
+            (1, 3),
+            (1000, 1),
+            (1 << 40, 3),
+            (7, 1 << 20),
+        ] {
+            let x = Rat::from_frac(p, q);
+            assert!(2f64.powi(log2_bound(&x) as i32) >= x.to_f64(), "{x}");
+        }
+        assert_eq!(log2_bound(&Rat::zero()), 0);
+    }
+
+    #[test]
+    fn angle_bits_follow_the_largest_angle() {
+        let span = [Rat::zero(), Rat::from(2)];
+        let still = Body {
+            radii: [Rat::one(), Rat::one(), Rat::one()],
+            motion: Motion::at_origin(),
+        };
+        let big = |k: u32| Rat::from_int(Int::pow10(k));
+        // Small angles add nothing; 1e300·2 needs about 998 bits.
+        assert_eq!(
+            angle_bits([&spinning(Rat::from(3), Rat::zero()), &still], &span),
+            0
+        );
+        let bits = angle_bits([&still, &spinning(big(300), Rat::zero())], &span);
+        assert!((998..=1010).contains(&bits), "{bits}");
+        let bits = angle_bits([&spinning(Rat::zero(), big(10)), &still], &span);
+        assert!((35..=40).contains(&bits), "{bits}");
+        assert_eq!(
+            angle_bits([&spinning(big(4000), Rat::zero()), &still], &span),
+            MAX_EXTRA_BITS
+        );
+    }
 }

@@ -153,6 +153,35 @@ pub struct Segment {
     pub start: Instant,
     /// Where it ends.
     pub end: Instant,
+    /// Whether `state` is proven on the whole segment (always on the exact
+    /// path; never in float mode; on the interval path when every sign that
+    /// decided it was proven, see `docs/helical.md`).
+    pub certified: bool,
+}
+
+/// A proven state at one exact instant inside a [`Gap`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Witness {
+    /// The instant (an exact rational).
+    pub t: Rat,
+    /// The state there, proven.
+    pub state: State,
+}
+
+/// A piece `[lo, hi]` of the span that the timeline does not cover: the
+/// solver could not decide it within its documented effort budget
+/// (`docs/helical.md`). Only the interval path produces gaps.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Gap {
+    /// Start of the undecided piece (exact).
+    pub lo: Rat,
+    /// End of the undecided piece (exact).
+    pub hi: Rat,
+    /// Why it is undecided, in words.
+    pub reason: String,
+    /// A proven non-separate state at an instant inside, if one was found:
+    /// a proof that the span is not collision-free.
+    pub witness: Option<Witness>,
 }
 
 /// Counters and degrees of one run, for reports and benchmarks.
@@ -178,23 +207,49 @@ pub struct Stats {
 pub struct Outcome {
     /// `[t0, t1]`.
     pub span: [Rat; 2],
-    /// `true` exactly when the bodies are separate throughout the span.
+    /// `true` exactly when the bodies are separate throughout the span —
+    /// proven, except in float mode, whose answers are never proven. On the
+    /// interval path `false` means a collision is proven unless
+    /// [`Outcome::undecided`] says otherwise.
     pub collision_free: bool,
+    /// `Some(reason)` when neither separation over the whole span nor a
+    /// collision was proven (interval path only): the JSON writes
+    /// `collision_free: null` and this as `collision_free_reason`.
+    pub undecided: Option<String>,
     /// The earliest instant at which they are not separate.
     pub first_contact: Option<Instant>,
     /// The isolated instants of external touching, in order.
     pub contacts: Vec<Instant>,
-    /// The span cut into segments, in order and without gaps (up to the
-    /// first contact only, when `complete` is false).
+    /// The span cut into segments, in order; without gaps when `complete`
+    /// (otherwise it stops at the first contact, or skips the [`Gap`]s).
     pub timeline: Vec<Segment>,
-    /// `false` when only the first contact was asked for: the timeline then
-    /// stops there.
+    /// Pieces of the span the timeline leaves out, undecided (in order).
+    pub gaps: Vec<Gap>,
+    /// `true` exactly when the timeline covers the span from `t0` to `t1`
+    /// with no gap: `false` when only the first contact was asked for (the
+    /// timeline then stops there) or when [`Outcome::gaps`] is not empty.
     pub complete: bool,
     /// Degrees and counters.
     pub stats: Stats,
     /// The contact point and normal of each entry of `contacts`, in the
     /// same order (empty when not computed).
     pub geometry: Vec<Geometry>,
+}
+
+impl Outcome {
+    /// Whether everything reported is proven: every segment and instant
+    /// certified, no [`Gap`] and no [`Outcome::undecided`] verdict. (It does
+    /// not say the timeline is complete: a first-contact query is certified
+    /// but not complete.)
+    pub fn certified(&self) -> bool {
+        self.timeline
+            .iter()
+            .all(|s| s.certified && s.start.certified && s.end.certified)
+            && self.contacts.iter().all(|c| c.certified)
+            && self.first_contact.as_ref().is_none_or(|c| c.certified)
+            && self.gaps.is_empty()
+            && self.undecided.is_none()
+    }
 }
 
 /// What a solver found on the normalised span `u ∈ [0, 1]`
@@ -249,6 +304,7 @@ impl Findings {
                 state,
                 start: start.clone(),
                 end: end.clone(),
+                certified: true,
             });
         } else if !complete && contacts.is_empty() {
             // Stopped at t0 itself: the bodies are not separate there.
@@ -256,6 +312,7 @@ impl Findings {
                 state: self.state0,
                 start: start.clone(),
                 end: start.clone(),
+                certified: true,
             });
         } else {
             let is_exact = |c: &Instant, at: &Rat| c.lo == *at && c.hi == *at;
@@ -274,6 +331,7 @@ impl Findings {
                         state: State::Touch,
                         start: p.clone(),
                         end: p.clone(),
+                        certified: true,
                     });
                 }
                 if let Some(next) = points.get(k + 1) {
@@ -284,6 +342,7 @@ impl Findings {
                         state,
                         start: p.clone(),
                         end: next.clone(),
+                        certified: true,
                     });
                 }
             }
@@ -312,9 +371,12 @@ impl Findings {
                     state: s.state,
                     start: map(&s.start),
                     end: map(&s.end),
+                    certified: s.certified && certified,
                 })
                 .collect(),
             complete,
+            gaps: Vec::new(),
+            undecided: None,
             span: span.clone(),
             stats,
             geometry: Vec::new(),
