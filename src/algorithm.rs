@@ -167,7 +167,7 @@ fn contacts_at<M: SignModel + Clone>(
     opts: &Options,
     stats: &mut Stats,
     bodies: &Bodies,
-) -> Result<Option<Vec<(Instant, Geometry)>>, CcdError> {
+) -> Result<Option<Contacts>, CcdError> {
     let mut contacts = vec![];
     for mut root in roots.by_ref() {
         stats.candidates += 1;
@@ -200,6 +200,9 @@ fn contacts_at<M: SignModel + Clone>(
     Ok((!roots.undecided()).then_some(contacts))
 }
 
+/// Contact instants with their geometry, in order.
+type Contacts = Vec<(Instant, Geometry)>;
+
 /// Algorithm 1's `sr0` branch without forming `sr0`: its roots from its
 /// certified `f64` Bernstein coefficients, everything else from `f`'s
 /// coefficients (crate::signs). `None` (the caller forms `sr0`) when
@@ -213,7 +216,7 @@ fn filtered_contacts(
     opts: &Options,
     stats: &Stats,
     bodies: &Bodies,
-) -> Result<Option<(Vec<(Instant, Geometry)>, Stats)>, CcdError> {
+) -> Result<Option<(Contacts, Stats)>, CcdError> {
     let sr0 = coefficients.model(Quantity::Sr0);
     if sr0.filtered_sign_at(&Rat::from_frac(1, 2)) == 0 {
         return Ok(None);
