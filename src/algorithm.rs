@@ -57,6 +57,22 @@ impl Options {
     pub const MAX_DIGITS: u32 = 1000;
 }
 
+/// The largest closed form the exact path forms, in bits (degree times
+/// coefficient length, [`exact_bits`]): 2²⁵, a polynomial of 4 MiB, about a
+/// second of this machine's time to form and isolate (docs/termination.md).
+pub const MAX_EXACT_BITS: u64 = 1 << 25;
+
+/// An upper estimate of the size in bits of `sr0`'s closed form: it is
+/// homogeneous of degree 6 in the coefficients `f_k` of `f(λ; u)` (Section
+/// 4), so it has degree `≤ 6·deg f` in `u` and coefficients of at most
+/// about `6·τ` bits for `f_k` of `τ` bits (plus the binomial growth of the
+/// products, a few bits per factor).
+pub fn exact_bits(f: &CharPoly) -> u64 {
+    let tau = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+    let n = f.degree() as u64;
+    (6 * n + 1) * (6 * tau + 8 * n.max(1))
+}
+
 /// The configuration at a rational parameter `u`, exactly (Theorem 3.10).
 fn state_at(f: &CharPoly, u: &Rat) -> State {
     State::from(classify_quartic(&f.at_scaled(u), Int::signum))
@@ -193,8 +209,10 @@ fn contacts_at<M: SignModel + Clone>(
     }
     if roots.exhausted() {
         return Err(CcdError::Effort {
-            work: roots.work(),
-            limit: ccd_solver::MAX_EXACT_WORK,
+            limit: "exact work",
+            unit: "word operations of exact root isolation",
+            bound: ccd_solver::MAX_EXACT_WORK,
+            reached: roots.work(),
         });
     }
     Ok((!roots.undecided()).then_some(contacts))
@@ -272,6 +290,15 @@ pub fn run(scene: &Scene, opts: &Options) -> Result<Outcome, CcdError> {
     }
     let f = CharPoly::from_placed(&a, &b);
     let state0 = early.unwrap_or_else(|| state_at(&f, &Rat::zero()));
+    let size = exact_bits(&f);
+    if size > MAX_EXACT_BITS {
+        return Err(CcdError::Effort {
+            limit: "exact size",
+            unit: "bits in the closed form of sr0",
+            bound: MAX_EXACT_BITS,
+            reached: size,
+        });
+    }
     let coefficients = Coefficients::new(&f);
     stats.deg_f = f.degree();
     let width = Rat::new(Int::one(), Int::pow10(opts.digits)).expect("nonzero denominator");

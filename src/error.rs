@@ -28,20 +28,25 @@ pub enum CcdError {
     /// The interval path for non-rational motions refused the scene.
     #[error(transparent)]
     Enclosure(#[from] ccd_enclosure::EnclosureError),
-    /// The exact isolation reached its documented bound on work (see
+    /// The exact path reached one of its documented bounds (see
     /// docs/termination.md): the scene's numbers are too long for its
-    /// degree to be answered in about a second. Every query below the
-    /// bound runs to the end.
+    /// degrees to be answered exactly in about a second. Every query below
+    /// the bounds runs to the end.
     #[error(
-        "the exact query needs more than its bound of {limit} word operations of exact \
-         root isolation (did {work}): the scene's numbers are too long for its degrees; \
-         see docs/termination.md"
+        "limit `{limit}`: the exact query needs more than {bound} {unit} (reached {reached}): \
+         the scene's numbers are too long for its degrees; see docs/termination.md"
     )]
     Effort {
-        /// Word operations done when the isolation stopped.
-        work: u64,
-        /// The bound, [`ccd_solver::MAX_EXACT_WORK`].
-        limit: u64,
+        /// Which bound: `exact work` (word operations of root isolation,
+        /// [`ccd_solver::MAX_EXACT_WORK`]) or `exact size` (bits of the
+        /// closed forms, [`crate::algorithm::MAX_EXACT_BITS`]).
+        limit: &'static str,
+        /// The unit of `bound` and `reached`.
+        unit: &'static str,
+        /// The bound.
+        bound: u64,
+        /// What the query reached (or would need) when it stopped.
+        reached: u64,
     },
     /// A broken invariant inside the engine (a bug: please report it).
     #[error("internal error: {0}")]

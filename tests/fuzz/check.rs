@@ -157,7 +157,9 @@ fn stack_sample(pid: u32) -> String {
 /// and motion errors), the option (`--arithmetic float` on a helical
 /// scene), `not TOML`, or the path of the interval path's
 /// errors (`a.motion: …`, `span: …`).
-const NAMES_THE_FIELD: [&str; 6] = ["field `", "option `", "not TOML", "a.", "b.", "span"];
+const NAMES_THE_FIELD: [&str; 7] = [
+    "field `", "option `", "limit `", "not TOML", "a.", "b.", "span",
+];
 
 /// The checks common to every run: exit 0 or 2, no panic, and a refusal
 /// that names what was wrong in a message of bounded length.

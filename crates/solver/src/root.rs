@@ -574,7 +574,13 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // their rounds: Descartes' rule on `q`'s exact Bernstein
             // coefficients over `I` decides as soon as `I` is free of
             // `q`'s roots (an exact test; see docs/termination.md).
-            if let Some(q) = nonzero.filter(|_| round >= EXACT_SIGN_ROUND || !second.is_finite()) {
+            // Its cost grows with the enclosure's bits, and the exact Taylor
+            // form above decides about as early whenever the `f64` bound on
+            // `q″` is finite: so it runs at rounds 3, 6, 12, … only.
+            let scheduled = round >= EXACT_SIGN_ROUND
+                && (round / EXACT_SIGN_ROUND).is_power_of_two()
+                && round % EXACT_SIGN_ROUND == 0;
+            if let Some(q) = nonzero.filter(|_| scheduled || !second.is_finite()) {
                 let b = Bernstein::from_power(q, &self.lo, &self.hi);
                 if b.sign_variations() == 0 && b.sign_at_lo() != 0 {
                     return b.sign_at_lo();
