@@ -290,13 +290,51 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
         }
     };
     let raw = v["timeline"].as_array().expect("checked above");
-    let first = segs.first().ok_or("JSON: empty timeline")?;
-    if !at(&first.start, &raw[0]["start"], &span[0]) {
-        return Err(format!("timeline starts at {:?}, not t0", first.start));
+    // The gaps (issue 18): pieces of the span the timeline does not cover,
+    // each with exact ends and a reason.
+    let gaps: Vec<(Rat, Rat)> = match v["gaps"].as_array() {
+        None => vec![],
+        Some(gaps) => gaps
+            .iter()
+            .map(|g| {
+                if g["reason"].as_str().is_none_or(str::is_empty) {
+                    return Err(Failure::from("JSON: a gap without a reason"));
+                }
+                Ok((rat(&g["lo"], "gap lo")?, rat(&g["hi"], "gap hi")?))
+            })
+            .collect::<Result<_, Failure>>()?,
+    };
+    // Segments and gaps tile the span in order from t0, without holes.
+    enum Piece<'a> {
+        Seg(usize, &'a Segment),
+        Gap(&'a (Rat, Rat)),
     }
-    for w in segs.windows(2) {
-        if w[0].end != w[1].start {
-            return Err(format!("gap or overlap between {:?} and {:?}", w[0], w[1]));
+    let mut pieces: Vec<(&Rat, Piece<'_>)> = segs
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (&s.start.lo, Piece::Seg(i, s)))
+        .chain(gaps.iter().map(|g| (&g.0, Piece::Gap(g))))
+        .collect();
+    pieces.sort_by(|x, y| x.0.cmp(y.0));
+    let first = pieces.first().ok_or("JSON: empty timeline and no gaps")?;
+    let starts_at_t0 = match &first.1 {
+        Piece::Seg(i, s) => at(&s.start, &raw[*i]["start"], &span[0]),
+        Piece::Gap(g) => g.0 == span[0],
+    };
+    if !starts_at_t0 {
+        return Err("the timeline does not start at t0".into());
+    }
+    for w in pieces.windows(2) {
+        let joined = match (&w[0].1, &w[1].1) {
+            (Piece::Seg(_, p), Piece::Seg(_, n)) => p.end == n.start,
+            (Piece::Seg(_, p), Piece::Gap(g)) => p.end.hi == g.0,
+            (Piece::Gap(g), Piece::Seg(_, n)) => n.start.lo == g.1 && n.start.hi == g.1,
+            (Piece::Gap(_), Piece::Gap(_)) => false,
+        };
+        if !joined {
+            return Err(
+                "a hole, an overlap or unmerged gaps between pieces of the timeline".into(),
+            );
         }
     }
     for s in &segs {
@@ -305,7 +343,16 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
         }
     }
     let complete = v["complete"].as_bool() != Some(false);
-    let last = segs.last().expect("nonempty");
+    if complete && !gaps.is_empty() {
+        return Err("complete with gaps".into());
+    }
+    let Some(last) = segs.last() else {
+        // Only gaps: nothing is decided, so nothing may be claimed.
+        if complete || v["collision_free"] == Value::Bool(true) {
+            return Err("only gaps, yet complete or collision-free".into());
+        }
+        return Ok((span, segs));
+    };
     if complete && !at(&last.end, &raw[raw.len() - 1]["end"], &span[1]) {
         return Err(format!("timeline ends at {:?}, not t1", last.end));
     }
@@ -332,8 +379,23 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
         ));
     }
     let separate = segs.iter().all(|s| s.state == State::Separate);
-    if complete && v["collision_free"].as_bool() != Some(separate) {
-        return Err("collision_free disagrees with the timeline".into());
+    // `collision_free` is true only when separation is proven (issue 18):
+    // a complete timeline of separate segments; when complete, it says
+    // exactly that.
+    if v["collision_free"] == Value::Bool(true) && !(complete && separate) {
+        return Err("collision_free without a complete separate timeline".into());
+    }
+    match v["collision_free"].as_bool() {
+        Some(free) if complete && free != separate => {
+            return Err("collision_free disagrees with the timeline".into());
+        }
+        None if v["collision_free_reason"]
+            .as_str()
+            .is_none_or(str::is_empty) =>
+        {
+            return Err("collision_free is null without a reason".into());
+        }
+        _ => {}
     }
     if v["first_contact"].is_null() != (complete && separate) {
         return Err("first_contact disagrees with collision_free".into());
