@@ -3,7 +3,7 @@
 
 use crate::baseline::sample;
 use crate::{Case, StabilityError};
-use ccd_arith::Rat;
+use ccd_arith::{Int, Rat};
 use ccd_exact::{run, Arithmetic, Options, Outcome, State};
 use std::time::{Duration, Instant};
 
@@ -209,7 +209,14 @@ impl Answer {
     /// Reads [`Answer::to_json`]'s text.
     pub fn from_json(text: &str) -> Option<Answer> {
         let v: serde_json::Value = serde_json::from_str(text).ok()?;
-        let rat = |x: &serde_json::Value| Rat::parse_exact(x.as_str()?).ok();
+        // `p/q` of any length (enclosure ends can exceed the scene
+        // format's 4096 characters a number, which `Rat::parse_exact`
+        // enforces).
+        let rat = |x: &serde_json::Value| {
+            let text = x.as_str()?;
+            let (p, q) = text.split_once('/').unwrap_or((text, "1"));
+            Rat::new(Int::parse_decimal(p)?, Int::parse_decimal(q)?)
+        };
         let contacts = v
             .get("contacts")?
             .as_array()?
@@ -328,5 +335,24 @@ pub fn evaluate_with(case: &Case, method: Method, guard: Option<&Guard>) -> Scor
             seconds: secs,
             refused: Some(e.to_string()),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn answers_round_trip_through_json_with_long_numbers() {
+        let long = Rat::new(Int::one(), Int::pow10(5000)).unwrap_or_else(Rat::zero);
+        let a = Answer {
+            collision_free: false,
+            contacts: vec![(long.clone(), &long + &Rat::from_frac(-3, 7))],
+            states: vec![State::Separate, State::Touch, State::Separate],
+        };
+        assert_eq!(Answer::from_json(&a.to_json().to_string()), Some(a));
+        for m in Method::ALL {
+            assert_eq!(Method::from_word(&m.word()), Some(m));
+        }
     }
 }
