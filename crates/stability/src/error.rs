@@ -38,6 +38,27 @@ pub enum StabilityError {
         /// What is wrong.
         reason: String,
     },
+    /// A method gave no answer within the report's budget (its process
+    /// was killed; the report counts it as wrong).
+    #[error("scene `{name}`, {method}: no answer within {seconds} s")]
+    NoAnswer {
+        /// The case.
+        name: String,
+        /// The method's label.
+        method: String,
+        /// The budget.
+        seconds: u64,
+    },
+    /// A guarded query's child process failed.
+    #[error("scene `{name}`, {method}: child process failed: {message}")]
+    Child {
+        /// The case.
+        name: String,
+        /// The method's label.
+        method: String,
+        /// Its standard error.
+        message: String,
+    },
     /// A construction whose ground truth is inconsistent (a generator bug).
     #[error("ground truth: {0}")]
     Truth(String),

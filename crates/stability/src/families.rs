@@ -38,6 +38,10 @@
 //! κ·p(u)/r0`: the contacts are exactly the `ρⱼ`, crossings for odd `mⱼ`
 //! and tangencies (touch and separate again) for even `mⱼ`.
 
+pub mod graze;
+pub mod perturbed;
+pub mod ratio;
+
 use crate::baseline::eval_curve;
 use crate::truth::{Closest, Truth};
 use crate::{StabilityError, Surd};
@@ -78,6 +82,13 @@ pub const FAMILIES: &[(&str, &str)] = &[
     ("endpoints", "contacts exactly at t0 and/or t1 on the span [1/3, 2]: touch-and-depart, approach-and-touch, grazes at the ends"),
     ("affine-degree", "similarity affine motions of degree n = 2…15 with rational crossings and a double (tangential) contact"),
     ("affine-cluster", "degree-3 affine motion, rational crossings at 2/7 and 2/7 + 10⁻ᵏ (overlap for a duration of 10⁻ᵏ)"),
+    ("graze-shapes", "different shapes A = (3,2,1), B = (1,1/2,3/4), B's bottom point passing over A's top point; gap +10⁻ᵏ, 0, −10⁻ᵏ, k = 1…100; overlap contacts bracketed by tangent balls"),
+    ("graze-turned", "graze-shapes with A and B turned about the contact normal by rational quaternions"),
+    ("graze-scene-turned", "graze-turned with the whole scene turned by the rational quaternion (1, 2, −3, 4)"),
+    ("graze-spin", "B spinning a quarter turn about the contact normal (rigid motion) in the turned scene; triaxial B for miss/touch, B = (1,1,3/4) for overlaps"),
+    ("ratio-needle", "needle (1, 10⁻ᵏ, 10⁻ᵏ), k = 1, 2, 4, …, 4096 (radii ratio up to 10⁴⁰⁹⁶), B = (1,1/2,3/4) passing over it; gap +1/8, 0, −1/8"),
+    ("ratio-disc", "disc (1, 1, 10⁻ᵏ), k = 1, 2, 4, …, 4096, same pass"),
+    ("bench-perturbed", "the paper's benchmark scenes (benches/scenes) with every coordinate x → x + 10⁻ᵈ·r, d = 30, 100, 1000; contacts bracketed around the unperturbed ones, each bracket checked by the static classifier"),
 ];
 
 fn rat(p: i64, q: i64) -> Rat {
@@ -711,23 +722,41 @@ fn affine_cluster(level: Level) -> Result<Vec<Case>, StabilityError> {
         .collect()
 }
 
-/// Every family's cases at `level`, in report order.
-pub fn generate(level: Level) -> Result<Vec<Case>, StabilityError> {
-    type Family = fn(Level) -> Result<Vec<Case>, StabilityError>;
-    let all: [Family; 9] = [
-        graze_spheres,
-        graze_ellipsoids,
-        ratio_shape,
-        ratio_size,
-        tangency_rational,
-        throughout,
-        endpoints,
-        affine_degree,
-        affine_cluster,
-    ];
+type Family = fn(Level) -> Result<Vec<Case>, StabilityError>;
+
+/// The generators, in the order of [`FAMILIES`].
+const GENERATORS: [Family; 16] = [
+    graze_spheres,
+    graze_ellipsoids,
+    ratio_shape,
+    ratio_size,
+    tangency_rational,
+    throughout,
+    endpoints,
+    affine_degree,
+    affine_cluster,
+    graze::graze_shapes,
+    graze::graze_turned,
+    graze::graze_scene_turned,
+    graze::graze_spin,
+    ratio::ratio_needle,
+    ratio::ratio_disc,
+    perturbed::bench_perturbed,
+];
+
+/// The cases of the families whose name is in `names` (all when `None`)
+/// at `level`, in report order.
+pub fn generate_only(level: Level, names: Option<&[&str]>) -> Result<Vec<Case>, StabilityError> {
     let mut out = Vec::new();
-    for family in all {
-        out.extend(family(level)?);
+    for ((name, _), family) in FAMILIES.iter().zip(GENERATORS) {
+        if names.is_none_or(|n| n.contains(name)) {
+            out.extend(family(level)?);
+        }
     }
     Ok(out)
+}
+
+/// Every family's cases at `level`, in report order.
+pub fn generate(level: Level) -> Result<Vec<Case>, StabilityError> {
+    generate_only(level, None)
 }

@@ -3,7 +3,7 @@
 
 use crate::baseline::sample;
 use crate::{Case, StabilityError};
-use ccd_arith::Rat;
+use ccd_arith::{Int, Rat};
 use ccd_exact::{run, Arithmetic, Options, Outcome, State};
 use std::time::{Duration, Instant};
 
@@ -117,7 +117,8 @@ pub struct Score {
     /// `max |estimate − true instant|` over the contacts (the midpoint of an
     /// enclosure is the estimate), when the count is right and nonzero.
     pub time_error: Option<f64>,
-    /// Every true instant lies in its reported `[lo, hi]` (decided exactly).
+    /// Every true instant lies in its reported `[lo, hi]`, or (for a
+    /// bracketed truth) the bracket meets it — decided exactly.
     pub enclosed: bool,
     /// Median wall time of one query.
     pub seconds: f64,
@@ -150,7 +151,7 @@ pub fn score(case: &Case, method: Method, ans: &Answer, seconds: f64) -> Score {
         states_ok: ans.states == t.states,
         found: ans.contacts.len(),
         time_error,
-        enclosed: count_ok && pairs().all(|(truth, (lo, hi))| truth.within(lo, hi)),
+        enclosed: count_ok && pairs().all(|(truth, (lo, hi))| truth.agrees(lo, hi)),
         seconds,
         refused: None,
     }
@@ -171,10 +172,155 @@ pub fn timed<T>(max_reps: usize, budget: Duration, mut f: impl FnMut() -> T) -> 
     (first, times[times.len() / 2])
 }
 
+impl Method {
+    /// The method as a command-line word: `exact`, `float`, `sampled:N`.
+    pub fn word(self) -> String {
+        match self {
+            Method::Exact => "exact".into(),
+            Method::Float => "float".into(),
+            Method::Sampled(n) => format!("sampled:{n}"),
+        }
+    }
+
+    /// The method named by [`Method::word`].
+    pub fn from_word(word: &str) -> Option<Method> {
+        match word {
+            "exact" => Some(Method::Exact),
+            "float" => Some(Method::Float),
+            _ => word
+                .strip_prefix("sampled:")
+                .and_then(|n| n.parse().ok())
+                .map(Method::Sampled),
+        }
+    }
+}
+
+impl Answer {
+    /// The answer as JSON (rationals as exact strings).
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "collision_free": self.collision_free,
+            "contacts": self.contacts.iter()
+                .map(|(lo, hi)| [lo.to_string(), hi.to_string()]).collect::<Vec<_>>(),
+            "states": self.states.iter().map(|s| s.name()).collect::<Vec<_>>(),
+        })
+    }
+
+    /// Reads [`Answer::to_json`]'s text.
+    pub fn from_json(text: &str) -> Option<Answer> {
+        let v: serde_json::Value = serde_json::from_str(text).ok()?;
+        // `p/q` of any length (enclosure ends can exceed the scene
+        // format's 4096 characters a number, which `Rat::parse_exact`
+        // enforces).
+        let rat = |x: &serde_json::Value| {
+            let text = x.as_str()?;
+            let (p, q) = text.split_once('/').unwrap_or((text, "1"));
+            Rat::new(Int::parse_decimal(p)?, Int::parse_decimal(q)?)
+        };
+        let contacts = v
+            .get("contacts")?
+            .as_array()?
+            .iter()
+            .map(|c| Some((rat(c.get(0)?)?, rat(c.get(1)?)?)))
+            .collect::<Option<Vec<_>>>()?;
+        let states = v
+            .get("states")?
+            .as_array()?
+            .iter()
+            .map(|s| crate::truth::parse_state(s.as_str()?))
+            .collect::<Option<Vec<_>>>()?;
+        Some(Answer {
+            collision_free: v.get("collision_free")?.as_bool()?,
+            contacts,
+            states,
+        })
+    }
+}
+
+/// Runs each method's first query in a child process (`EXE answer FILE
+/// METHOD`, the `stability` binary) that is killed after `budget`, so a
+/// query that stalls costs the report `budget`, not the rest of its run,
+/// and leaves nothing running.
+#[derive(Clone, Debug)]
+pub struct Guard {
+    /// The `stability` executable.
+    pub exe: std::path::PathBuf,
+    /// The longest one query may take.
+    pub budget: Duration,
+}
+
+impl Guard {
+    /// [`answer`] in a child process, waited for at most `self.budget`.
+    pub fn answer(&self, case: &Case, method: Method) -> Result<Answer, StabilityError> {
+        let dir = std::env::temp_dir();
+        let path = dir.join(format!(
+            "ccd-stability-{}-{}.toml",
+            std::process::id(),
+            case.name
+        ));
+        let text = crate::scene_io::to_toml(&case.scene, &[])?;
+        std::fs::write(&path, text).map_err(|e| StabilityError::io(&path, e))?;
+        let result = self.run_child(case, method, &path);
+        let _ = std::fs::remove_file(&path);
+        result
+    }
+
+    fn run_child(
+        &self,
+        case: &Case,
+        method: Method,
+        path: &std::path::Path,
+    ) -> Result<Answer, StabilityError> {
+        use std::process::{Command, Stdio};
+        let io = |e| StabilityError::io(&self.exe, e);
+        let mut child = Command::new(&self.exe)
+            .arg("answer")
+            .arg(path)
+            .arg(method.word())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(io)?;
+        let start = Instant::now();
+        while child.try_wait().map_err(io)?.is_none() {
+            if start.elapsed() > self.budget {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(StabilityError::NoAnswer {
+                    name: case.name.clone(),
+                    method: method.label(),
+                    seconds: self.budget.as_secs(),
+                });
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        let out = child.wait_with_output().map_err(io)?;
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        match Answer::from_json(&stdout) {
+            Some(a) if out.status.success() => Ok(a),
+            _ => Err(StabilityError::Child {
+                name: case.name.clone(),
+                method: method.label(),
+                message: String::from_utf8_lossy(&out.stderr).trim().to_string(),
+            }),
+        }
+    }
+}
+
 /// Runs and scores `method` on `case`: median of up to 5 runs within
 /// about a quarter second.
 pub fn evaluate(case: &Case, method: Method) -> Score {
-    let (ans, secs) = timed(5, Duration::from_millis(250), || answer(case, method));
+    evaluate_with(case, method, None)
+}
+
+/// [`evaluate`], the first run under `guard` when given (a query that
+/// does not answer within the budget is refused: wrong).
+pub fn evaluate_with(case: &Case, method: Method, guard: Option<&Guard>) -> Score {
+    let mut first = guard;
+    let (ans, secs) = timed(5, Duration::from_millis(250), || match first.take() {
+        Some(g) => g.answer(case, method),
+        None => answer(case, method),
+    });
     match ans {
         Ok(a) => score(case, method, &a, secs),
         Err(e) => Score {
@@ -189,5 +335,24 @@ pub fn evaluate(case: &Case, method: Method) -> Score {
             seconds: secs,
             refused: Some(e.to_string()),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn answers_round_trip_through_json_with_long_numbers() {
+        let long = Rat::new(Int::one(), Int::pow10(5000)).unwrap_or_else(Rat::zero);
+        let a = Answer {
+            collision_free: false,
+            contacts: vec![(long.clone(), &long + &Rat::from_frac(-3, 7))],
+            states: vec![State::Separate, State::Touch, State::Separate],
+        };
+        assert_eq!(Answer::from_json(&a.to_json().to_string()), Some(a));
+        for m in Method::ALL {
+            assert_eq!(Method::from_word(&m.word()), Some(m));
+        }
     }
 }

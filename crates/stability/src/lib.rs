@@ -13,7 +13,8 @@
 //!   instants ([`baseline`]), the discrete-time check many engines default to.
 //!
 //! [`report`] turns the scores into `docs/stability.md`'s tables and the
-//! chart `docs/stability.svg`:
+//! chart `docs/stability.svg`, and [`scaling`] charts the exact mode's time
+//! against the input's bit size and against `k` (`docs/stability-scaling.svg`):
 //!
 //! ```text
 //! cargo run --release -p ccd-stability --bin stability -- report docs/
@@ -36,6 +37,7 @@ mod error;
 pub mod families;
 pub mod harness;
 pub mod report;
+pub mod scaling;
 pub mod scene_io;
 mod surd;
 pub mod truth;
@@ -43,7 +45,7 @@ pub mod truth;
 pub use error::StabilityError;
 pub use families::{Case, Level};
 pub use surd::Surd;
-pub use truth::Truth;
+pub use truth::{Instant, Truth};
 
 use std::path::Path;
 

@@ -3,7 +3,7 @@
 //! `<text>` so no system font is needed).
 
 use crate::families::FAMILIES;
-use crate::harness::{evaluate, Method, Score};
+use crate::harness::{evaluate_with, Guard, Method, Score};
 use crate::{Case, StabilityError};
 use plotters::prelude::*;
 use std::collections::BTreeMap;
@@ -18,13 +18,21 @@ pub struct Row {
     pub scores: Vec<Score>,
 }
 
-/// Runs every method of [`Method::ALL`] on every case; `progress` hears
-/// about each case as it finishes.
-pub fn run_all(cases: Vec<Case>, mut progress: impl FnMut(&Row)) -> Vec<Row> {
+/// Runs every method of [`Method::ALL`] on every case (each method's
+/// first query under `guard`, if any); `progress` hears about each case as
+/// it finishes.
+pub fn run_all(
+    cases: Vec<Case>,
+    guard: Option<&Guard>,
+    mut progress: impl FnMut(&Row),
+) -> Vec<Row> {
     cases
         .into_iter()
         .map(|case| {
-            let scores = Method::ALL.iter().map(|&m| evaluate(&case, m)).collect();
+            let scores = Method::ALL
+                .iter()
+                .map(|&m| evaluate_with(&case, m, guard))
+                .collect();
             let row = Row { case, scores };
             progress(&row);
             row
@@ -184,7 +192,18 @@ pub fn markdown(rows: &[Row]) -> String {
             );
         }
     }
-    for family in ["graze-spheres", "graze-ellipsoids", "affine-cluster"] {
+    for family in [
+        "graze-spheres",
+        "graze-ellipsoids",
+        "affine-cluster",
+        "graze-shapes",
+        "graze-turned",
+        "graze-scene-turned",
+        "graze-spin",
+        "ratio-needle",
+        "ratio-disc",
+        "bench-perturbed",
+    ] {
         let fam: Vec<&Row> = rows
             .iter()
             .filter(|r| r.case.truth.family == family && r.case.truth.k.is_some())

@@ -3,13 +3,41 @@
 //! `Scene::from_toml(&to_toml(s)) == s`.
 
 use crate::StabilityError;
-use ccd_arith::Rat;
+use ccd_arith::{Int, Rat};
 use ccd_motion::{Bezier, Body, Motion};
 use ccd_scene::Scene;
 use std::fmt::Write;
 
+/// `p/q` forms longer than this are written as a decimal when shorter.
+const LONG: usize = 100;
+
+/// `x` as `"p/q"`, or — when that is long and the denominator divides
+/// `10^e` — as the shorter decimal `"me-e"`, so that `10⁻⁴⁰⁹⁶` is
+/// `"1e-4096"`, within the format's 4096 characters a number.
 fn num(x: &Rat) -> String {
-    format!("\"{x}\"")
+    let plain = x.to_string();
+    match decimal(x) {
+        Some(d) if plain.len() > LONG && d.len() < plain.len() => format!("\"{d}\""),
+        _ => format!("\"{plain}\""),
+    }
+}
+
+/// `x = m/10^e` written `me-e`, when the denominator is `2^a·5^b`.
+fn decimal(x: &Rat) -> Option<String> {
+    let q = x.denom();
+    let a = q.trailing_zeros()?;
+    let odd = q.shr_floor(a);
+    // odd = 5^b: b is within one of bits(odd)/log2(5).
+    let guess = (odd.bits() as f64 / 5f64.log2()).round() as u32;
+    let five = Int::from_i64(5);
+    let b = (guess.saturating_sub(1)..=guess + 1).find(|&b| five.pow(b) == odd)?;
+    let e = (a as u32).max(b);
+    let m = &(x.numer() * &Int::one().shl(u64::from(e) - a)) * &five.pow(e - b);
+    Some(if e == 0 {
+        m.to_string()
+    } else {
+        format!("{m}e-{e}")
+    })
 }
 
 fn list<T>(xs: &[T], f: impl Fn(&T) -> String) -> String {
@@ -77,4 +105,29 @@ pub fn to_toml(scene: &Scene, comment: &[String]) -> Result<String, StabilityErr
     body("a", &scene.a, &mut out)?;
     body("b", &scene.b, &mut out)?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn powers_of_ten_are_written_short_and_read_back() {
+        let tiny = Rat::new(Int::one(), Int::pow10(4096)).unwrap_or_else(Rat::zero);
+        for x in [
+            tiny.clone(),
+            -&tiny,
+            &Rat::from_frac(5, 8)
+                + &Rat::new(Int::one(), Int::pow10(200)).unwrap_or_else(Rat::zero),
+            Rat::from_frac(-3, 40),
+            Rat::from_frac(1, 3),
+            Rat::from(7),
+        ] {
+            let text = num(&x);
+            let inner = text.trim_matches('"');
+            assert!(inner.len() <= x.to_string().len(), "{text}");
+            assert_eq!(Rat::parse_exact(inner).ok(), Some(x), "{text}");
+        }
+        assert_eq!(num(&tiny), "\"1e-4096\"");
+    }
 }

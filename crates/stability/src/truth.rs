@@ -24,6 +24,83 @@ pub struct Closest {
     pub gap: Rat,
 }
 
+/// Where a true isolated contact is, as far as the construction knows it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Instant {
+    /// Exactly here (a closed form).
+    At(Surd),
+    /// The only contact in the closed interval `[lo, hi]` — for
+    /// constructions whose instants have no closed form (non-homothetic
+    /// grazes, perturbed benchmark scenes), where the construction proves a
+    /// bracket instead (see [`crate::families::graze`]).
+    Within(Rat, Rat),
+}
+
+impl Instant {
+    /// The instant's form, for messages and comments.
+    pub fn describe(&self) -> String {
+        match self {
+            Instant::At(s) => s.describe(),
+            Instant::Within(lo, hi) => format!("within [{lo}, {hi}]"),
+        }
+    }
+
+    /// A rational inside the truth: the value to `2^-bits`, or the
+    /// bracket's midpoint.
+    pub fn approx(&self, bits: u64) -> Rat {
+        match self {
+            Instant::At(s) => s.approx(bits),
+            Instant::Within(lo, hi) => Rat::midpoint(lo, hi),
+        }
+    }
+
+    /// The lower and upper ends of what is known (equal up to `2^-bits`
+    /// for a closed form).
+    pub fn bounds(&self, bits: u64) -> (Rat, Rat) {
+        match self {
+            Instant::At(s) => (s.approx(bits), s.approx(bits)),
+            Instant::Within(lo, hi) => (lo.clone(), hi.clone()),
+        }
+    }
+
+    /// `|x − instant|` (a closed form, to about `2^-200`), or the distance
+    /// from `x` to the bracket — a lower bound of the true error, 0 inside.
+    pub fn distance(&self, x: &Rat) -> f64 {
+        match self {
+            Instant::At(s) => s.distance(x),
+            Instant::Within(lo, hi) if x < lo => (lo - x).to_f64(),
+            Instant::Within(_, hi) if x > hi => (x - hi).to_f64(),
+            Instant::Within(..) => 0.0,
+        }
+    }
+
+    /// The reported enclosure `[lo, hi]` is consistent with the truth,
+    /// decided exactly: it contains the closed form, or it meets the
+    /// bracket (the most a bracket can prove).
+    pub fn agrees(&self, lo: &Rat, hi: &Rat) -> bool {
+        match self {
+            Instant::At(s) => s.within(lo, hi),
+            Instant::Within(a, b) => lo <= b && a <= hi,
+        }
+    }
+
+    /// The image `t0 + h·self` under `t = t0 + u·h`, `h > 0`.
+    pub fn affine(&self, t0: &Rat, h: &Rat) -> Instant {
+        match self {
+            Instant::At(s) => Instant::At(s.affine(t0, h)),
+            Instant::Within(lo, hi) => Instant::Within(t0 + &(h * lo), t0 + &(h * hi)),
+        }
+    }
+
+    /// The closed form, when there is one.
+    pub fn exact(&self) -> Option<&Surd> {
+        match self {
+            Instant::At(s) => Some(s),
+            Instant::Within(..) => None,
+        }
+    }
+}
+
 /// What a scene's answer must be.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Truth {
@@ -39,7 +116,7 @@ pub struct Truth {
     /// between two pieces (or at an end).
     pub states: Vec<State>,
     /// The isolated contact instants (times), in increasing order.
-    pub contacts: Vec<Surd>,
+    pub contacts: Vec<Instant>,
     /// For grazing passes: the closest approach.
     pub closest: Option<Closest>,
 }
@@ -140,6 +217,47 @@ impl Truth {
             k,
             collision_free: states == [State::Separate],
             states,
+            contacts: contacts_u
+                .iter()
+                .map(|c| Instant::At(c.affine(&span[0], &h)))
+                .collect(),
+            closest: None,
+        })
+    }
+
+    /// The truth of a construction that proves the state sequence `states`
+    /// and, for each isolated contact, a bracket or closed form
+    /// `contacts_u` in `u ∈ [0, 1]` (increasing, disjoint) on `span`.
+    pub fn known(
+        family: &str,
+        case: String,
+        k: Option<u32>,
+        span: &[Rat; 2],
+        contacts_u: Vec<Instant>,
+        states: Vec<State>,
+    ) -> Result<Truth, StabilityError> {
+        let touches = states.iter().filter(|s| **s == State::Touch).count();
+        let ordered = contacts_u.windows(2).all(|w| {
+            let (_, hi) = w[0].bounds(200);
+            let (lo, _) = w[1].bounds(200);
+            hi <= lo
+        });
+        let inside = contacts_u.iter().all(|c| {
+            let (lo, hi) = c.bounds(200);
+            lo >= Rat::zero() && hi <= Rat::one() && lo <= hi
+        });
+        if touches != contacts_u.len() || !ordered || !inside {
+            return Err(StabilityError::Truth(format!(
+                "{family}-{case}: contacts and states disagree or out of order"
+            )));
+        }
+        let h = &span[1] - &span[0];
+        Ok(Truth {
+            family: family.to_string(),
+            case,
+            k,
+            collision_free: states == [State::Separate],
+            states,
             contacts: contacts_u.iter().map(|c| c.affine(&span[0], &h)).collect(),
             closest: None,
         })
@@ -160,9 +278,12 @@ impl Truth {
 
     /// The sidecar JSON.
     pub fn to_json(&self) -> Value {
-        let surd = |s: &Surd| {
-            json!({"a": s.a.to_string(), "b": s.b.to_string(), "q": s.q.to_string(),
-                   "closed_form": s.describe(), "approx": s.approx(200).to_decimal(40)})
+        let surd = |c: &Instant| match c {
+            Instant::At(s) => json!({"a": s.a.to_string(), "b": s.b.to_string(),
+                   "q": s.q.to_string(), "closed_form": s.describe(),
+                   "approx": s.approx(200).to_decimal(40)}),
+            Instant::Within(lo, hi) => json!({"within": [lo.to_string(), hi.to_string()],
+                   "approx": Rat::midpoint(lo, hi).to_decimal(40)}),
         };
         let mut m = Map::new();
         m.insert("family".into(), json!(self.family));
@@ -231,7 +352,23 @@ impl Truth {
             .and_then(Value::as_array)
             .ok_or_else(|| bad("missing array `contacts`".into()))?
             .iter()
-            .map(|c| Surd::new(rat_of(c, "a")?, rat_of(c, "b")?, rat_of(c, "q")?))
+            .map(|c| match c.get("within").and_then(Value::as_array) {
+                Some(w) if w.len() == 2 => {
+                    let end = |i: usize| {
+                        let s = w[i]
+                            .as_str()
+                            .ok_or_else(|| bad("`within` holds strings".into()))?;
+                        Rat::parse_exact(s).map_err(|e| bad(format!("`within` = {s:?}: {e}")))
+                    };
+                    Ok(Instant::Within(end(0)?, end(1)?))
+                }
+                Some(_) => Err(bad("`within` is not a pair".into())),
+                None => Ok(Instant::At(Surd::new(
+                    rat_of(c, "a")?,
+                    rat_of(c, "b")?,
+                    rat_of(c, "q")?,
+                )?)),
+            })
             .collect::<Result<Vec<_>, _>>()?;
         let closest = match v.get("closest") {
             None | Some(Value::Null) => None,
