@@ -439,6 +439,26 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `a/b` with `b² < 1/(hi − lo)` is that rational, and is then reported
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
+        self.narrow_to(max_width);
+        if self.sign_lo != 0 {
+            let s = Rat::simplest_in(&self.lo, &self.hi);
+            if s != self.lo
+                && s != self.hi
+                && self.base.admits_root_at(&s)
+                && self.base.sign_at(&s) == 0
+            {
+                self.lo = s.clone();
+                self.hi = s;
+                self.sign_lo = 0;
+            }
+        }
+    }
+
+    /// [`RealRoot::refine_to`] without the final rational-root test: what
+    /// [`RealRoot::sign_with`] needs between its rounds (the test's
+    /// continued fraction costs time quadratic in the ends' bits, and the
+    /// sign decisions do not need the root to be exact).
+    fn narrow_to(&mut self, max_width: &Rat) {
         // Float Newton until it reaches the root's float resolution; after
         // a failure farther out (outside its basin), a few bisections first.
         let mut float_newton = true;
@@ -465,18 +485,6 @@ impl<M: SignModel + Clone> RealRoot<M> {
             }
             wait = wait.saturating_sub(1);
             self.bisect();
-        }
-        if self.sign_lo != 0 {
-            let s = Rat::simplest_in(&self.lo, &self.hi);
-            if s != self.lo
-                && s != self.hi
-                && self.base.admits_root_at(&s)
-                && self.base.sign_at(&s) == 0
-            {
-                self.lo = s.clone();
-                self.hi = s;
-                self.sign_lo = 0;
-            }
         }
     }
 
@@ -592,7 +600,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // logarithm of the bits that `q(α) ≠ 0` takes to show.
             let gain = 16i64 << round.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
             let w = self.width().mul_pow2(-gain);
-            self.refine_to(&w);
+            self.narrow_to(&w);
         }
         unreachable!("the loop returns")
     }
