@@ -15,6 +15,7 @@
 
 use ccd_arith::{Int, Rat};
 use ccd_exact::{run_toml, Options, Outcome, State};
+use ccd_stability::families::{poly_from_roots, to_bernstein};
 
 /// `10^(−k)`.
 fn ten_to_minus(k: u32) -> Rat {
@@ -23,38 +24,13 @@ fn ten_to_minus(k: u32) -> Rat {
 
 /// The power-basis coefficients of `Π (u − r_i)^(m_i)`, times `sign`.
 fn from_roots(roots: &[(Rat, u32)], sign: i64) -> Vec<Rat> {
-    let mut p = vec![Rat::from(sign)];
-    for (r, m) in roots {
-        for _ in 0..*m {
-            // p · (u − r)
-            let mut next = vec![Rat::zero(); p.len() + 1];
-            for (i, c) in p.iter().enumerate() {
-                next[i + 1] = &next[i + 1] + c;
-                next[i] = &next[i] - &(c * r);
-            }
-            p = next;
-        }
-    }
-    p
+    let sign = Rat::from(sign);
+    poly_from_roots(roots).iter().map(|c| c * &sign).collect()
 }
 
-fn binomial(n: usize, k: usize) -> Rat {
-    (0..k).fold(Rat::one(), |acc, i| {
-        &(&acc * &Rat::from((n - i) as i64)) / &Rat::from((i + 1) as i64)
-    })
-}
-
-/// Bernstein coefficients on `[0, 1]` of a power-basis polynomial:
-/// `b_i = Σ_{j ≤ i} C(i, j)/C(n, j)·a_j`.
+/// Bernstein coefficients on `[0, 1]` of a power-basis polynomial.
 fn bernstein(a: &[Rat]) -> Vec<Rat> {
-    let n = a.len() - 1;
-    (0..=n)
-        .map(|i| {
-            (0..=i).fold(Rat::zero(), |acc, j| {
-                &acc + &(&(&binomial(i, j) / &binomial(n, j)) * &a[j])
-            })
-        })
-        .collect()
+    to_bernstein(a, a.len() - 1)
 }
 
 /// The rotation matrix of the quaternion `[w, x, y, z]` (not unit).

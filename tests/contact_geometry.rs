@@ -15,7 +15,30 @@ fn load(path: &str) -> Scene {
     Scene::from_toml(&text).unwrap_or_else(|e| panic!("{full}: {e}"))
 }
 
+/// The shipped scenes whose radii span at most twelve orders of magnitude
+/// (the widths of docs/scene-format.md's goal are promised there; the
+/// stability report's `ratio-*` families go to `10⁻⁴⁰⁹⁶`, where the
+/// normal's box is only as narrow as 512-bit intervals allow, or there is
+/// no point box at all, `point_note` saying why).
 fn shipped() -> Vec<(String, Scene)> {
+    all_shipped()
+        .into_iter()
+        .filter(|(_, s)| {
+            let radii: Vec<f64> =
+                s.a.radii
+                    .iter()
+                    .chain(&s.b.radii)
+                    .map(Rat::to_f64)
+                    .collect();
+            let (lo, hi) = radii
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(l, h), r| (l.min(*r), h.max(*r)));
+            hi <= 1e12 * lo
+        })
+        .collect()
+}
+
+fn all_shipped() -> Vec<(String, Scene)> {
     let mut out = vec![];
     for dir in ["tests/scenes", "tests/stability"] {
         let full = format!("{}/{dir}", env!("CARGO_MANIFEST_DIR"));
@@ -311,8 +334,17 @@ fn float_mode_points_are_estimates_near_the_exact_ones() {
         };
         let out = run(&s, &float).unwrap();
         assert_eq!(out.geometry.len(), out.contacts.len(), "{name}");
-        if out.contacts.len() != exact.contacts.len() {
-            continue; // the float path's failures are documented elsewhere
+        // The float path's failures are documented elsewhere
+        // (docs/stability.md): its points are compared where its instants
+        // are right.
+        let instants_agree = out.contacts.len() == exact.contacts.len()
+            && out
+                .contacts
+                .iter()
+                .zip(&exact.contacts)
+                .all(|(f, e)| (f.midpoint().to_f64() - e.midpoint().to_f64()).abs() < 1e-9);
+        if !instants_agree {
+            continue;
         }
         for (g, e) in out.geometry.iter().zip(&exact.geometry) {
             let (p, n, certified) = point_of(g);

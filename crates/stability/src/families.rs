@@ -573,7 +573,7 @@ fn endpoints(_level: Level) -> Result<Vec<Case>, StabilityError> {
 }
 
 /// Power-basis coefficients (low → high) of `Π (u − ρ)^m`.
-fn poly_from_roots(roots: &[(Rat, u32)]) -> Vec<Rat> {
+pub fn poly_from_roots(roots: &[(Rat, u32)]) -> Vec<Rat> {
     let mut p = vec![Rat::one()];
     for (rho, m) in roots {
         for _ in 0..*m {
