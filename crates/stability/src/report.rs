@@ -50,7 +50,7 @@ fn median(mut xs: Vec<f64>) -> f64 {
 }
 
 /// Seconds in a readable unit.
-fn secs(s: f64) -> String {
+pub(crate) fn secs(s: f64) -> String {
     if s < 1e-3 {
         format!("{:.0} µs", s * 1e6)
     } else if s < 1.0 {

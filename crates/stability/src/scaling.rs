@@ -4,7 +4,7 @@
 //! Markdown section and the chart `docs/stability-scaling.svg` (plain SVG,
 //! log–log axes, written directly).
 
-use crate::report::Row;
+use crate::report::{secs, Row};
 use crate::Case;
 use ccd_arith::Rat;
 use ccd_motion::{Body, Motion};
@@ -79,17 +79,6 @@ fn colour(family: &str) -> &'static str {
         .iter()
         .find(|(f, _)| *f == family)
         .map_or("#bbbbbb", |(_, c)| c)
-}
-
-/// Seconds in a readable unit.
-fn secs(s: f64) -> String {
-    if s < 1e-3 {
-        format!("{:.0} µs", s * 1e6)
-    } else if s < 1.0 {
-        format!("{:.1} ms", s * 1e3)
-    } else {
-        format!("{s:.2} s")
-    }
 }
 
 /// The Markdown section: the slowest exact query and its ratio to the
