@@ -111,7 +111,7 @@ impl Node {
 
     /// Prefers the float form of exact coefficients whenever the filter can
     /// sign every coefficient (and `float` allows it).
-    fn from_exact_bernstein(b: Bernstein, depth: u32, float: bool) -> Node {
+    fn from_exact_bernstein(b: Bernstein, depth: u32, float: bool, cluster: Cluster) -> Node {
         let (lo, hi) = (b.lo().clone(), b.hi().clone());
         let f = float
             .then(|| FloatBernstein::from_exact(b.coeffs(), b.scale().signum()))
@@ -125,7 +125,7 @@ impl Node {
             hi,
             depth,
             coeffs,
-            cluster: Cluster::default(),
+            cluster,
         }
     }
 
@@ -168,12 +168,11 @@ impl Node {
             Coeffs::Exact(b) => {
                 let (l, r) = b.split_half();
                 let s = l.sign_at_hi();
-                let (mut left, mut right) = (
-                    Node::from_exact_bernstein(l, depth, float),
-                    Node::from_exact_bernstein(r, depth, float),
-                );
-                (left.cluster, right.cluster) = (self.cluster, self.cluster);
-                (left, right, Some(s))
+                (
+                    Node::from_exact_bernstein(l, depth, float, self.cluster),
+                    Node::from_exact_bernstein(r, depth, float, self.cluster),
+                    Some(s),
+                )
             }
         }
     }
@@ -203,11 +202,9 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// this polynomial (coefficients beyond `f64`'s range, say) and the
     /// children of exact nodes stay exact.
     float_failures: u32,
-    /// Exact work done so far, in word operations ([`exact_work`]).
+    /// Exact work done so far, in word operations ([`exact_work`]); the
+    /// isolation stops once it passes `max_work` ([`RootIter::exhausted`]).
     work: u64,
-    /// The isolation stopped at [`RootIter::max_work`] (see
-    /// [`RootIter::exhausted`]).
-    exhausted: bool,
     max_work: u64,
 }
 
@@ -261,7 +258,12 @@ impl RootIter<Arc<SignProbe>> {
                 coeffs: Coeffs::Float(f),
                 cluster: Cluster::default(),
             },
-            None => Node::from_exact_bernstein(Bernstein::from_power(poly, lo, hi), 0, true),
+            None => Node::from_exact_bernstein(
+                Bernstein::from_power(poly, lo, hi),
+                0,
+                true,
+                Cluster::default(),
+            ),
         };
         stack.push(Item::Node(root));
         if first == 0 {
@@ -275,7 +277,6 @@ impl RootIter<Arc<SignProbe>> {
             budget: 0,
             float_failures: 0,
             work: 0,
-            exhausted: false,
             max_work: MAX_EXACT_WORK,
         }
     }
@@ -312,7 +313,6 @@ impl<M: SignModel + Clone> RootIter<M> {
             budget: 2 * coeffs.len() + 16,
             float_failures: 0,
             work: 0,
-            exhausted: false,
             max_work: MAX_EXACT_WORK,
         }
     }
@@ -328,7 +328,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// but there may be more. Never the case below the bound: every other
     /// isolation runs to the end.
     pub fn exhausted(&self) -> bool {
-        self.exhausted
+        self.work > self.max_work
     }
 
     /// The exact work done so far (word operations, [`MAX_EXACT_WORK`]).
@@ -343,10 +343,9 @@ impl<M: SignModel + Clone> RootIter<M> {
         self
     }
 
-    /// Counts the exact work that produced `b`; `false` once past the bound.
-    fn charge(&mut self, b: &Bernstein, factor: u64) -> bool {
+    /// Counts the exact work that produced `b`.
+    fn charge(&mut self, b: &Bernstein, factor: u64) {
         self.work = self.work.saturating_add(exact_work(b, factor));
-        self.work <= self.max_work
     }
 
     /// Halves `node` and stacks the halves (left on top), with the split
@@ -356,8 +355,7 @@ impl<M: SignModel + Clone> RootIter<M> {
         let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
         for child in [&left, &right] {
             if let Coeffs::Exact(b) = &child.coeffs {
-                let within = self.charge(b, 1);
-                self.exhausted |= !within;
+                self.charge(b, 1);
             }
         }
         let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
@@ -398,7 +396,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             Coeffs::Exact(b) => b,
             Coeffs::Float(_) => {
                 converted = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
-                self.exhausted |= !self.charge(&converted, end_bits(&converted));
+                self.charge(&converted, end_bits(&converted));
                 &converted
             }
         };
@@ -423,14 +421,7 @@ impl<M: SignModel + Clone> RootIter<M> {
         };
         let estimate = &total.shr_floor(1) - &num.div_floor(&den);
         let four = Int::from(4);
-        let max_i = &total - &four;
-        let mut i = estimate - Int::from(2);
-        if i.signum() < 0 {
-            i = Int::zero();
-        }
-        if i > max_i {
-            i = max_i.clone();
-        }
+        let i = (estimate - Int::from(2)).clamp(Int::zero(), &total - &four);
         // Both cuts are dyadic splits of I's own coefficients; I′ itself
         // comes from the power basis (a split of a split would cut at a
         // non-dyadic ratio, with a rational scale to reduce).
@@ -438,28 +429,32 @@ impl<M: SignModel + Clone> RootIter<M> {
         let end = &i + &four;
         if !i.is_zero() {
             let (left, _) = b.split(&cut(&i));
-            self.exhausted |= !self.charge(&left, i.bits());
+            self.charge(&left, i.bits());
             if left.sign_variations() != 0 || left.sign_at_hi() == 0 {
                 return None;
             }
         }
         if end != total {
             let (_, right) = b.split(&cut(&end));
-            self.exhausted |= !self.charge(&right, end.bits());
+            self.charge(&right, end.bits());
             if right.sign_variations() != 0 || right.sign_at_lo() == 0 {
                 return None;
             }
         }
         let at = |j: &Int| &node.lo + &(&w * &cut(j));
         let middle = Bernstein::from_power(self.base.exact(), &at(&i), &at(&end));
-        self.exhausted |= !self.charge(&middle, end_bits(&middle));
-        let mut zoomed = Node::from_exact_bernstein(middle, node.depth + 1, false);
-        zoomed.cluster = Cluster {
+        self.charge(&middle, end_bits(&middle));
+        let cluster = Cluster {
             var: k,
             streak: ZOOM_STREAK,
             speed: (speed * 2).min(MAX_SPEED),
         };
-        Some(zoomed)
+        Some(Node::from_exact_bernstein(
+            middle,
+            node.depth + 1,
+            false,
+            cluster,
+        ))
     }
 
     /// Ends a filter-only isolation as undecided.
@@ -475,7 +470,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 
     fn next(&mut self) -> Option<RealRoot<M>> {
         while let Some(item) = self.stack.pop() {
-            if self.exhausted {
+            if self.exhausted() {
                 self.stack.clear();
                 return None;
             }
@@ -501,8 +496,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     self.float_failures += 1;
                     let exact = Node::exact(self.base.exact(), node.lo, node.hi, node.depth);
                     if let Coeffs::Exact(b) = &exact.coeffs {
-                        let within = self.charge(b, end_bits(b));
-                        self.exhausted |= !within;
+                        self.charge(b, end_bits(b));
                     }
                     self.stack.push(Item::Node(exact));
                     continue;

@@ -534,13 +534,19 @@ impl<M: SignModel + Clone> RealRoot<M> {
     ///    `q'(m)` computed exactly at a short dyadic `m ∈ I` and only `q''`
     ///    enclosed in floating point — its rounding is multiplied by the
     ///    squared width, so this decides any `q(α) ≠ 0` as soon as `I` is
-    ///    narrower than about `|q(α)/q'(α)|`.
+    ///    narrower than about `|q(α)/q'(α)|`. It runs first with the
+    ///    linear part in `f64` (cheap), then with it exact
+    ///    ([`RealRoot::exact_taylor_sign`]: no underflow, however small
+    ///    `q(α)` is beside `q`'s coefficients);
+    /// 3. once `q(α) ≠ 0` is proven, at rounds 3, 6, 12, …, Descartes' rule
+    ///    on `q`'s exact Bernstein coefficients over `I`.
     ///
     /// Zero is decided exactly: `q(α) = 0` iff `g = gcd(p, q)` has a root in
     /// `I` (`q` from [`SignModel::exact`]; `q ≡ 0` gives `g = p`), and since
     /// `g | p` has at most the one root `α` there, that is a sign change of
     /// `g` between the ends. Between rounds the interval is refined (each
-    /// step proven by exact signs of `p`).
+    /// step proven by exact signs of `p`): by 16 bits in the first rounds, then
+    /// by twice as many each round. docs/termination.md says why this ends.
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         // `Some(q)` once `q(α) ≠ 0` is proven (q formed for the gcd test).
@@ -578,16 +584,14 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 }
                 nonzero = Some(q);
             }
-            // `q(α) ≠ 0` is proven, and the floating-point parts have had
-            // their rounds: Descartes' rule on `q`'s exact Bernstein
-            // coefficients over `I` decides as soon as `I` is free of
-            // `q`'s roots (an exact test; see docs/termination.md).
-            // Its cost grows with the enclosure's bits, and the exact Taylor
-            // form above decides about as early whenever the `f64` bound on
-            // `q″` is finite: so it runs at rounds 3, 6, 12, … only.
-            let scheduled = round >= EXACT_SIGN_ROUND
-                && (round / EXACT_SIGN_ROUND).is_power_of_two()
-                && round % EXACT_SIGN_ROUND == 0;
+            // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
+            // Bernstein coefficients over `I` decides as soon as `I` is free
+            // of `q`'s roots. Its cost grows with the enclosure's bits, and
+            // the exact Taylor form decides about as early whenever the
+            // `f64` bound on `q″` is finite: so it runs at rounds 3, 6, 12, …
+            // (and whenever that bound overflowed).
+            let scheduled =
+                round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
             if let Some(q) = nonzero.filter(|_| scheduled || !second.is_finite()) {
                 let b = Bernstein::from_power(q, &self.lo, &self.hi);
                 if b.sign_variations() == 0 && b.sign_at_lo() != 0 {
