@@ -92,12 +92,14 @@ impl<'a> Bodies<'a> {
             Case::Simple
         };
         let mut last = None;
+        let mut tried_rational = false;
         for (k, (bits, precisions)) in STAGES.into_iter().enumerate() {
             if bits > 0 && r.lo() != r.hi() {
                 let narrower = r.width().mul_pow2(-bits);
                 r.refine_to(&narrower);
             }
-            if k >= 2 && r.lo() == r.hi() {
+            if k >= 2 && r.lo() == r.hi() && !tried_rational {
+                tried_rational = true;
                 if let Some(g) = self.at_rational(r.lo(), case) {
                     return g;
                 }

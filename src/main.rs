@@ -193,7 +193,7 @@ fn table(out: &Outcome, options: &Options) -> String {
             let mark = unproven(fc.certified);
             let _ = writeln!(t, "first contact ≈ {}{mark}", fc.approx(15));
         }
-        (None, None) if out.collision_free => t.push_str("collision-free over the span\n"),
+        (None, _) if out.collision_free => t.push_str("collision-free over the span\n"),
         _ => {}
     }
     if let Some(why) = &out.undecided {

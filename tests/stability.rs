@@ -255,16 +255,7 @@ fn sampling_misses_short_events_and_floats_are_uncertified() {
 #[test]
 fn new_families_take_the_generic_path_with_long_numbers() {
     let cases = shipped();
-    let generic = [
-        "graze-shapes",
-        "graze-turned",
-        "graze-scene-turned",
-        "graze-spin",
-        "ratio-needle",
-        "ratio-disc",
-        "bench-perturbed",
-    ];
-    for family in generic {
+    for &family in ccd_stability::families::GENERIC {
         let fam: Vec<&Case> = cases.iter().filter(|c| c.truth.family == family).collect();
         assert!(fam.len() >= 3, "{family}");
         for case in fam {

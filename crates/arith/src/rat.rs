@@ -361,8 +361,7 @@ impl Rat {
     /// [`Rat::MAX_TEXT`] bytes of text, and a written exponent (the digits
     /// after `e`) of magnitude at most [`Rat::MAX_EXPONENT`]. Texts quoted in
     /// errors are cut by [`excerpt`].
-    pub fn parse_exact(text: &str) -> Result<Rat, ParseRatError> {
-        let t = text;
+    pub fn parse_exact(t: &str) -> Result<Rat, ParseRatError> {
         if t.is_empty() {
             return Err(ParseRatError::Empty);
         }

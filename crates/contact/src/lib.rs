@@ -379,10 +379,11 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
             })
         })
     };
-    for _ in 0..1 {
-        let Some(zt) = try_map(&z, |v| point(v.estimate())) else {
-            break;
-        };
+    // One step: `None` when a piece of it is not available (a singular
+    // midpoint Jacobian, a value outside f64, or exact scalars, for which
+    // `meet` keeps nothing); then `z` stays as it came.
+    let step = || -> Option<[S; 4]> {
+        let zt = try_map(&z, |v| point(v.estimate()))?;
         let (g, h) = (ax(&zt), bx(&zt));
         // F(z̃): rows 0..2 λ·(A X) + B X; row 3 XᵀAX = x·(A X)₀..₂ + (A X)₃.
         let a3 = (0..3).fold(a[3][3].clone(), |acc, c| acc.plus(&a[3][c].times(&zt[c])));
@@ -398,13 +399,11 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
         let det = ccd_quadric::det4(&mid);
         let adj = ccd_quadric::adj4(&mid);
         if !(det.is_finite() && det != 0.0) {
-            break;
+            return None;
         }
-        let Some(c) = try_map(&adj, |row| try_map(row, |v| point(v / det))) else {
-            break;
-        };
+        let c = try_map(&adj, |row| try_map(row, |v| point(v / det)))?;
         let dz: [S; 4] = std::array::from_fn(|k| z[k].minus(&zt[k]));
-        let next = try_map(&[0, 1, 2, 3], |&i| {
+        try_map(&[0, 1, 2, 3], |&i| {
             let mut v = zt[i].clone();
             for (k, fk) in f.iter().enumerate() {
                 v = v.minus(&c[i][k].times(fk));
@@ -415,10 +414,12 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
                 v = v.plus(&e.times(dzj));
             }
             v.meet(&z[i])
-        });
-        match next {
-            Some(v) => z = v,
-            None => break,
+        })
+    };
+    // Exact inputs (zero width) are what they are: nothing to tighten.
+    if z.iter().any(|v| v.estimate_width() > 0.0) {
+        if let Some(next) = step() {
+            z = next;
         }
     }
     let [x0, x1, x2, l] = z;
@@ -508,18 +509,12 @@ pub struct Goal {
 impl Goal {
     /// The goal for bodies `a`, `b` at `digits` (module docs).
     pub fn new(a: &Body, b: &Body, digits: u32) -> Goal {
-        let size = a
-            .radii
-            .iter()
-            .chain(&b.radii)
-            .max()
-            .cloned()
-            .unwrap_or_else(Rat::one);
-        let smallest = a
-            .radii
-            .iter()
-            .chain(&b.radii)
+        let radii = || a.radii.iter().chain(&b.radii);
+        let size = radii().max().cloned().unwrap_or_else(Rat::one);
+        // Radii are positive in a valid scene; a zero one gets no division.
+        let smallest = radii()
             .min()
+            .filter(|r| r.signum() > 0)
             .cloned()
             .unwrap_or_else(Rat::one);
         let tol = Rat::new(

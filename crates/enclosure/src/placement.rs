@@ -21,7 +21,7 @@ use crate::trig::Trig;
 use ccd_arith::{Interval, Rat, RingOps};
 use ccd_motion::{Body, HelicalCenter, Motion, Quat, Vec3};
 use ccd_quadric::{
-    affine_inverse, body_diagonal, characteristic, congruence, norm2, rigid_inverse,
+    affine_inverse, body_diagonal, characteristic, congruence, norm2, quat_mul, rigid_inverse,
     rotation_numerator, Mat3, Mat4,
 };
 use ccd_subres::{closed_forms, QuarticInvariants};
@@ -71,31 +71,6 @@ fn bezier<N: Trig, const D: usize>(
     let coords: [N; D] = std::array::from_fn(|k| last.get(k).cloned().unwrap_or_else(N::zero));
     let w = last.get(D).cloned().unwrap_or_else(N::one);
     (coords, w)
-}
-
-/// Hamilton product `p ⊗ q` (so that `R(p ⊗ q) = R(p)·R(q)`).
-fn quat_mul<N: RingOps>(p: &[N; 4], q: &[N; 4]) -> [N; 4] {
-    let [a1, b1, c1, d1] = p;
-    let [a2, b2, c2, d2] = q;
-    let m = |x: &N, y: &N| x.times(y);
-    [
-        m(a1, a2)
-            .minus(&m(b1, b2))
-            .minus(&m(c1, c2))
-            .minus(&m(d1, d2)),
-        m(a1, b2)
-            .plus(&m(b1, a2))
-            .plus(&m(c1, d2))
-            .minus(&m(d1, c2)),
-        m(a1, c2)
-            .minus(&m(b1, d2))
-            .plus(&m(c1, a2))
-            .plus(&m(d1, b2)),
-        m(a1, d2)
-            .plus(&m(b1, c2))
-            .minus(&m(c1, b2))
-            .plus(&m(d1, a2)),
-    ]
 }
 
 /// The helical orientation quaternion at `t` (not unit: `|q|² = |axis|²·|q0|²`).

@@ -677,9 +677,7 @@ fn sphere_state(a: &Body, b: &Body, span: &[Rat; 2], lo: &Rat, hi: &Rat) -> Opti
     let t = Interval::from_rat(lo).hull(&Interval::from_rat(hi));
     let (ca, cb) = (center_at(a, span, &t)?, center_at(b, span, &t)?);
     let d2 = (0..3).fold(Interval::point(0.0), |acc, i| {
-        let d = ca[i].minus(&cb[i]);
-        let sq = d.times(&d);
-        acc.plus(&Interval::new(sq.lo.max(0.0), sq.hi))
+        acc.plus(&ca[i].minus(&cb[i]).square())
     });
     let max = |b: &Body| b.radii.iter().max().cloned().unwrap_or_else(Rat::zero);
     let min = |b: &Body| b.radii.iter().min().cloned().unwrap_or_else(Rat::zero);

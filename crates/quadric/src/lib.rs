@@ -16,6 +16,6 @@ pub use matrix::{
     placed_characteristic, Mat3, Mat4,
 };
 pub use placement::{
-    affine_inverse, affine_placement, body_diagonal, norm2, rigid_inverse, rigid_placement,
-    rotation_numerator,
+    affine_inverse, affine_placement, body_diagonal, norm2, quat_mul, rigid_inverse,
+    rigid_placement, rotation_numerator,
 };

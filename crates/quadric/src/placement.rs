@@ -6,6 +6,31 @@
 use crate::matrix::{adj3, det3, Mat3, Mat4};
 use ccd_arith::RingOps;
 
+/// Hamilton product `p ⊗ q` (so that `R(p ⊗ q) = R(p)·R(q)`).
+pub fn quat_mul<N: RingOps>(p: &[N; 4], q: &[N; 4]) -> [N; 4] {
+    let [a1, b1, c1, d1] = p;
+    let [a2, b2, c2, d2] = q;
+    let m = |x: &N, y: &N| x.times(y);
+    [
+        m(a1, a2)
+            .minus(&m(b1, b2))
+            .minus(&m(c1, c2))
+            .minus(&m(d1, d2)),
+        m(a1, b2)
+            .plus(&m(b1, a2))
+            .plus(&m(c1, d2))
+            .minus(&m(d1, c2)),
+        m(a1, c2)
+            .minus(&m(b1, d2))
+            .plus(&m(c1, a2))
+            .plus(&m(d1, b2)),
+        m(a1, d2)
+            .plus(&m(b1, c2))
+            .minus(&m(c1, b2))
+            .plus(&m(d1, a2)),
+    ]
+}
+
 /// `M(q)`, the rotation numerator of the contract: `R(q) = M(q)/|q|²` for a
 /// quaternion `q = [w, x, y, z]` (not necessarily unit).
 pub fn rotation_numerator<R: RingOps>(q: &[R; 4]) -> Mat3<R> {

@@ -56,11 +56,6 @@ pub(crate) fn exact_text(text: &str, path: &FieldPath) -> Result<Rat, SceneError
         field: path.to_field(),
         limit: Limit::Number,
     };
-    // Checked here first: refusing over-long text must not depend on where
-    // its characters' byte boundaries fall.
-    if text.len() > Rat::MAX_TEXT {
-        return Err(too_large());
-    }
     Rat::parse_exact(text).map_err(|e| match e {
         ParseRatError::TooLarge(_) => too_large(),
         source => SceneError::Number {

@@ -91,6 +91,18 @@ pub const FAMILIES: &[(&str, &str)] = &[
     ("bench-perturbed", "the paper's benchmark scenes (benches/scenes) with every coordinate x → x + 10⁻ᵈ·r, d = 30, 100, 1000; contacts bracketed around the unperturbed ones, each bracket checked by the static classifier"),
 ];
 
+/// The families of issue 12 whose scenes all take the generic path
+/// (`sr0 ≢ 0`) with long numbers.
+pub const GENERIC: &[&str] = &[
+    "graze-shapes",
+    "graze-turned",
+    "graze-scene-turned",
+    "graze-spin",
+    "ratio-needle",
+    "ratio-disc",
+    "bench-perturbed",
+];
+
 fn rat(p: i64, q: i64) -> Rat {
     Rat::from_frac(p, q)
 }

@@ -271,6 +271,7 @@ impl Guard {
         method: Method,
         path: &std::path::Path,
     ) -> Result<Answer, StabilityError> {
+        use std::io::Read;
         use std::process::{Command, Stdio};
         let io = |e| StabilityError::io(&self.exe, e);
         let mut child = Command::new(&self.exe)
@@ -281,8 +282,24 @@ impl Guard {
             .stderr(Stdio::piped())
             .spawn()
             .map_err(io)?;
+        // Both pipes are drained while the child runs: an answer longer
+        // than a pipe's buffer would otherwise block it until the budget.
+        let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
+            std::thread::spawn(move || {
+                let mut bytes = Vec::new();
+                if let Some(mut pipe) = pipe {
+                    let _ = pipe.read_to_end(&mut bytes);
+                }
+                bytes
+            })
+        };
+        let out_reader = drain(child.stdout.take().map(|p| Box::new(p) as _));
+        let err_reader = drain(child.stderr.take().map(|p| Box::new(p) as _));
         let start = Instant::now();
-        while child.try_wait().map_err(io)?.is_none() {
+        let status = loop {
+            if let Some(status) = child.try_wait().map_err(io)? {
+                break status;
+            }
             if start.elapsed() > self.budget {
                 let _ = child.kill();
                 let _ = child.wait();
@@ -293,15 +310,16 @@ impl Guard {
                 });
             }
             std::thread::sleep(Duration::from_millis(2));
-        }
-        let out = child.wait_with_output().map_err(io)?;
-        let stdout = String::from_utf8_lossy(&out.stdout);
+        };
+        let out = out_reader.join().unwrap_or_default();
+        let err = err_reader.join().unwrap_or_default();
+        let stdout = String::from_utf8_lossy(&out);
         match Answer::from_json(&stdout) {
-            Some(a) if out.status.success() => Ok(a),
+            Some(a) if status.success() => Ok(a),
             _ => Err(StabilityError::Child {
                 name: case.name.clone(),
                 method: method.label(),
-                message: String::from_utf8_lossy(&out.stderr).trim().to_string(),
+                message: String::from_utf8_lossy(&err).trim().to_string(),
             }),
         }
     }

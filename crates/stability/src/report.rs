@@ -192,18 +192,8 @@ pub fn markdown(rows: &[Row]) -> String {
             );
         }
     }
-    for family in [
-        "graze-spheres",
-        "graze-ellipsoids",
-        "affine-cluster",
-        "graze-shapes",
-        "graze-turned",
-        "graze-scene-turned",
-        "graze-spin",
-        "ratio-needle",
-        "ratio-disc",
-        "bench-perturbed",
-    ] {
+    let by_k = ["graze-spheres", "graze-ellipsoids", "affine-cluster"];
+    for &family in by_k.iter().chain(crate::families::GENERIC) {
         let fam: Vec<&Row> = rows
             .iter()
             .filter(|r| r.case.truth.family == family && r.case.truth.k.is_some())

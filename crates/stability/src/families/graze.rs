@@ -73,19 +73,7 @@ use ccd_arith::{Int, Rat};
 use ccd_exact::{Scene, State};
 use ccd_motion::{Bezier, Body, Motion, Quat, Vec3};
 
-/// The Hamilton product `p·q` of quaternions `(w, x, y, z)`, so that
-/// `R(p·q) = R(p)·R(q)`.
-pub fn quat_mul(p: &Quat, q: &Quat) -> Quat {
-    let [a1, b1, c1, d1] = p;
-    let [a2, b2, c2, d2] = q;
-    let m = |x: &Rat, y: &Rat| x * y;
-    [
-        &(&(&m(a1, a2) - &m(b1, b2)) - &m(c1, c2)) - &m(d1, d2),
-        &(&(&m(a1, b2) + &m(b1, a2)) + &m(c1, d2)) - &m(d1, c2),
-        &(&(&m(a1, c2) - &m(b1, d2)) + &m(c1, a2)) + &m(d1, b2),
-        &(&(&m(a1, d2) + &m(b1, c2)) - &m(c1, b2)) + &m(d1, a2),
-    ]
-}
+pub use ccd_quadric::quat_mul;
 
 /// A turn about the vertical axis, `(w, 0, 0, z)`.
 pub fn about_z(w: Rat, z: Rat) -> Quat {
