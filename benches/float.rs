@@ -14,7 +14,8 @@
 //!
 //! `cargo bench --bench float` (about a minute).
 
-use ccd_float::{prepare, solve, solve_prepared, Options};
+use ccd_exact::Options;
+use ccd_float::{prepare, solve, solve_prepared};
 use ccd_scene::Scene;
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -58,6 +59,7 @@ fn float(c: &mut Criterion) {
     let full = Options::default();
     let first = Options {
         first_contact_only: true,
+        ..Options::default()
     };
     for (name, s) in scenes() {
         let f = char_poly(&s);
@@ -67,7 +69,7 @@ fn float(c: &mut Criterion) {
             "{name}: deg f = {}, deg sr0 = {:?}, branch {}, {} candidates, {} contacts",
             out.stats.deg_f,
             out.stats.deg_sr0,
-            out.stats.branch,
+            out.stats.branch_name(),
             out.stats.candidates,
             out.contacts.len()
         );

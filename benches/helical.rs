@@ -38,18 +38,18 @@ radii = [0.5, 0.5, 1.5]
 fn helical(c: &mut Criterion) {
     let mut g = c.benchmark_group("helical");
     g.sample_size(10).measurement_time(Duration::from_secs(5));
-    let full = ccd_enclosure::Options::default();
-    let first = ccd_enclosure::Options {
+    let full = ccd_exact::Options::default();
+    let first = ccd_exact::Options {
         first_contact_only: true,
         ..full.clone()
     };
     for name in ["paper-example-5-2.toml", "screw-step.toml"] {
         let s = scene(name);
         g.bench_function(format!("{name} interval total"), |b| {
-            b.iter(|| ccd_enclosure::run(&s.a, &s.b, &s.span, &full).expect("runs"))
+            b.iter(|| ccd_interval::run(&s.a, &s.b, &s.span, &full).expect("runs"))
         });
         g.bench_function(format!("{name} interval first contact"), |b| {
-            b.iter(|| ccd_enclosure::run(&s.a, &s.b, &s.span, &first).expect("runs"))
+            b.iter(|| ccd_interval::run(&s.a, &s.b, &s.span, &first).expect("runs"))
         });
     }
     let rational = Scene::from_toml(SCREW_RATIONAL).expect("valid scene");

@@ -107,7 +107,7 @@ pub fn to_json(outcome: &Outcome) -> Value {
             "deg_f": s.deg_f,
             "deg_sr0": s.deg_sr0,
             "deg_candidates": s.deg_candidates,
-            "branch": s.branch,
+            "branch": s.branch_name(),
             "candidates": s.candidates,
             "sr0_formed": s.sr0_formed,
         },

@@ -4,47 +4,89 @@
 //! ellipsoids, after Jia, Choi, Mourrain & Wang, *An algebraic approach to
 //! continuous collision detection for ellipsoids* (CAGD 2011).
 //!
-//! Data flows one way: scene ([`Scene`]) → motion (`ccd-motion`) → quadric
+//! Data flows one way: scene ([`Scene`]) → motion ([`Motion`]) → quadric
 //! matrices `A(t)`, `B(t)` → characteristic polynomial `f(λ; t)` →
-//! subresultants `sr_ij(t)` (`ccd-subres`) → roots (`ccd-solver`) →
-//! timeline ([`Outcome`]). Scenes with a non-rational (helical) motion go
-//! through certified interval enclosures instead (`ccd-enclosure`), where
-//! an instant that cannot be certified is reported with `certified: false`.
+//! subresultants `sr_ij(t)` → roots → timeline ([`Outcome`]). Algorithm 1
+//! exists once (`ccd-algorithm`), over three arithmetics: exact (certified,
+//! the default for rational motions), float (`--arithmetic float`, not
+//! certified) and interval (non-rational, helical motions: certified where
+//! the enclosures decide, an instant that cannot be certified reported with
+//! `certified: false`). This crate is the front door: [`run`] dispatches,
+//! [`to_json`] writes the contract's JSON, and everything needed to build a
+//! scene in code and read the result is re-exported here ([`prelude`]).
+//!
+//! A scene built in code, its first contact read back:
 //!
 //! ```
-//! use ccd_exact::{run, Options, Scene, State};
-//! let scene = Scene::from_toml(r#"
+//! use ccd_exact::prelude::*;
+//! let r = |x: i64| Rat::from(x);
+//! let a = Body {
+//!     radii: [r(2), r(1), r(1)],
+//!     motion: Motion::translation(Bezier::polynomial(vec![[r(11), r(0), r(0)], [r(-1), r(0), r(0)]])),
+//! };
+//! let b = Body {
+//!     radii: [r(2), r(1), r(1)],
+//!     motion: Motion::translation(Bezier::polynomial(vec![[r(3), r(-2), r(-4)], [r(3), r(2), r(0)]])),
+//! };
+//! let scene = Scene { span: [r(0), r(1)], a, b };
+//! let options = Options { first_contact_only: true, ..Options::default() };
+//! let out = run(&scene, &options)?;
+//! let t1 = out.first_contact.expect("they touch");
+//! // t1 ≈ 0.5395042868, enclosed to 1e-15 with exact rational ends.
+//! assert!(t1.certified && t1.lo.to_f64() <= 0.5395042869 && t1.hi.to_f64() >= 0.5395042867);
+//! assert!(t1.width() <= Rat::from_frac(1, 1_000_000_000_000_000));
+//! # Ok::<(), CcdError>(())
+//! ```
+//!
+//! The same scene from TOML, the whole timeline:
+//!
+//! ```
+//! use ccd_exact::{run_toml, Options, State};
+//! let out = run_toml(r#"
 //!     [a]
 //!     radii = [2, 1, 1]
 //!     motion = { kind = "translation", center = [[11, 0, 0], [-1, 0, 0]] }
 //!     [b]
 //!     radii = [2, 1, 1]
 //!     motion = { kind = "translation", center = [[3, -2, -4], [3, 2, 0]] }
-//! "#).unwrap();
-//! let out = run(&scene, &Options::default()).unwrap();
+//! "#, &Options::default()).unwrap();
 //! let states: Vec<State> = out.timeline.iter().map(|s| s.state).collect();
 //! assert_eq!(states, [State::Separate, State::Touch, State::Overlap, State::Touch, State::Separate]);
-//! // The first contact t1 ≈ 0.5395042868, enclosed to 1e-15 with exact ends.
-//! let t1 = &out.contacts[0];
-//! assert!(t1.lo.to_f64() <= 0.5395042869 && t1.hi.to_f64() >= 0.5395042867);
-//! assert!(t1.width() <= ccd_arith::Rat::from_frac(1, 1_000_000_000_000_000));
 //! ```
 
 #![warn(missing_docs)]
 
-mod algorithm;
-mod error;
-mod geometry;
 mod json;
-mod signs;
 
-pub use algorithm::{symbolic, Arithmetic, Options};
+pub use ccd_algorithm::{Arithmetic, CcdError, Options};
+pub use ccd_arith::{Int, Rat};
+pub use ccd_exact_arith::{symbolic, MAX_EXACT_BITS};
+pub use ccd_motion::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
 pub use ccd_scene::{Scene, SceneError};
-pub use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome, Segment, State, Stats, Witness};
-pub use error::CcdError;
+pub use ccd_timeline::{
+    Box3, Branch, Gap, Geometry, Instant, Outcome, Path, Segment, State, Stats, Witness,
+};
 pub use json::to_json;
 
-/// Runs continuous collision detection on a scene (Algorithm 1).
+/// Everything needed to build a scene in code, run it and read the result.
+pub mod prelude {
+    pub use crate::{
+        run, run_toml, Arithmetic, Bezier, Body, Box3, CcdError, Geometry, HelicalCenter, Instant,
+        Motion, Options, Outcome, Rat, Scene, Segment, State,
+    };
+}
+
+/// Runs continuous collision detection on a scene (Algorithm 1), on the
+/// exact arithmetic (or the float one, as `options` asks) for rational
+/// motions and on the interval arithmetic when a motion is helical.
+///
+/// # Errors
+///
+/// [`CcdError::Scene`] for a scene that fails [`Scene::validate`],
+/// [`CcdError::Motion`] for a motion that degenerates on the span,
+/// [`CcdError::Option`] for an option out of range (`digits` above
+/// [`Options::MAX_DIGITS`], float arithmetic on a helical scene), and
+/// [`CcdError::Effort`] when an exact query reaches a documented bound.
 pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
     if options.digits > Options::MAX_DIGITS {
         return Err(CcdError::Option {
@@ -53,27 +95,34 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
         });
     }
     scene.validate()?;
-    let helical = [&scene.a, &scene.b].iter().any(|b| !b.motion.is_rational());
-    if !helical {
-        return algorithm::run(scene, options);
+    let (a, b, span) = (&scene.a, &scene.b, &scene.span);
+    if !(a.motion.is_rational() && b.motion.is_rational()) {
+        if options.arithmetic == Arithmetic::Float {
+            return Err(CcdError::Option { option: "--arithmetic", reason: "float arithmetic needs rational motions; helical scenes use certified interval enclosures".into() });
+        }
+        return ccd_algorithm::run(ccd_interval::Intervals::new(a, b, span, options)?, options);
     }
-    if options.arithmetic == Arithmetic::Float {
-        return Err(CcdError::Option { option: "--arithmetic", reason: "float arithmetic needs rational motions; helical scenes use certified interval enclosures".into() });
+    match options.arithmetic {
+        Arithmetic::Exact => {
+            ccd_algorithm::run(ccd_exact_arith::Exact::new(scene, options.digits)?, options)
+        }
+        Arithmetic::Float => {
+            let (pa, pb) = (
+                ccd_motion::placed_quadric(a, span).map_err(|e| CcdError::motion("a", e))?,
+                ccd_motion::placed_quadric(b, span).map_err(|e| CcdError::motion("b", e))?,
+            );
+            let p = ccd_float::prepare(&ccd_motion::CharPoly::from_placed(&pa, &pb));
+            ccd_algorithm::run(ccd_float::Float::new(&p, span, Some((a, b))), options)
+        }
     }
-    // Non-rational motions: certified interval enclosures (not exact algebra).
-    let opts = ccd_enclosure::Options {
-        digits: options.digits,
-        first_contact_only: options.first_contact_only,
-    };
-    let mut outcome =
-        ccd_enclosure::run(&scene.a, &scene.b, &scene.span, &opts).map_err(CcdError::from)?;
-    if options.contact_geometry {
-        outcome.geometry = geometry::helical(scene, &outcome, options);
-    }
-    Ok(outcome)
 }
 
 /// Parses a scene from TOML text and runs it.
+///
+/// # Errors
+///
+/// [`CcdError::Scene`] naming the field for text that is not a valid
+/// scene, otherwise those of [`run`].
 pub fn run_toml(text: &str, options: &Options) -> Result<Outcome, CcdError> {
     run(&Scene::from_toml(text)?, options)
 }

@@ -103,18 +103,23 @@ fn table(out: &Outcome, options: &Options) -> String {
     let float = options.arithmetic == Arithmetic::Float;
     let s = &out.stats;
     let mut t = String::new();
-    if s.branch.starts_with("interval") {
+    if s.path == ccd_exact::Path::Interval {
         let _ = writeln!(
             t,
             "span [{}, {}]; non-rational motion: certified interval enclosures ({})\n",
-            out.span[0], out.span[1], s.branch
+            out.span[0],
+            out.span[1],
+            s.branch_name()
         );
     } else {
         let sr0 = s.deg_sr0.map_or("≡ 0".into(), |d| d.to_string());
         let _ = writeln!(
             t,
             "span [{}, {}]; deg_t f = {}, deg sr0 = {sr0}, branch: {}\n",
-            out.span[0], out.span[1], s.deg_f, s.branch
+            out.span[0],
+            out.span[1],
+            s.deg_f,
+            s.branch_name()
         );
     }
     let _ = writeln!(t, "  {:<9} {:>20}  {:>20}", "state", "from", "to");

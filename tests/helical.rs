@@ -7,8 +7,9 @@
 mod common;
 
 use ccd_arith::Rat;
-use ccd_enclosure::{run, EnclosureError, Options};
+use ccd_exact::{CcdError, Options};
 use ccd_exact::{Outcome, Scene, State};
+use ccd_interval::run;
 use ccd_motion::{Body, Motion};
 use ccd_quadric::{classify_pair, Ellipsoid};
 
@@ -76,6 +77,7 @@ fn paper_example_5_2_first_contact_and_digits() {
         &Options {
             digits: 30,
             first_contact_only: true,
+            ..Options::default()
         },
     );
     assert!(!first.complete);
@@ -278,29 +280,36 @@ fn screw_step_has_certified_contacts() {
 #[test]
 fn invalid_queries_are_typed_errors() {
     let s = scene_file("paper-example-5-2.toml");
-    let reversed = [s.span[1].clone(), s.span[0].clone()];
+    let field = |r: Result<Outcome, CcdError>| match r {
+        Err(CcdError::Scene(e)) => e.field().map(str::to_string),
+        other => panic!("{other:?}"),
+    };
+    let reversed = Scene {
+        span: [s.span[1].clone(), s.span[0].clone()],
+        ..s.clone()
+    };
     assert_eq!(
-        run(&s.a, &s.b, &reversed, &Options::default()),
-        Err(EnclosureError::Span)
+        field(ccd_exact::run(&reversed, &Options::default())).as_deref(),
+        Some("span")
     );
     let too_many = Options {
         digits: Options::MAX_DIGITS + 1,
-        first_contact_only: false,
+        ..Options::default()
     };
     assert!(matches!(
-        run(&s.a, &s.b, &s.span, &too_many),
-        Err(EnclosureError::Digits { .. })
+        ccd_exact::run(&s, &too_many),
+        Err(CcdError::Option {
+            option: "--digits",
+            ..
+        })
     ));
-    let mut a = s.a.clone();
-    if let Motion::Helical { axis, .. } = &mut a.motion {
+    let mut zero_axis = s.clone();
+    if let Motion::Helical { axis, .. } = &mut zero_axis.a.motion {
         *axis = [Rat::zero(), Rat::zero(), Rat::zero()];
     }
     assert_eq!(
-        run(&a, &s.b, &s.span, &Options::default()),
-        Err(EnclosureError::Zero {
-            body: "a",
-            field: "axis"
-        })
+        field(ccd_exact::run(&zero_axis, &Options::default())).as_deref(),
+        Some("a.motion.axis")
     );
 }
 
@@ -496,9 +505,9 @@ fn issue_18_scenes_claim_nothing_unproven() {
         assert!(first.certified && first.state == State::Separate, "{name}");
         assert!(last.certified && last.state == State::Separate && last.end.hi == s.span[1]);
         assert!(
-            !out.stats.branch.contains("assumed"),
+            !out.stats.branch_name().contains("assumed"),
             "{}",
-            out.stats.branch
+            out.stats.branch_name()
         );
     }
 }
@@ -611,11 +620,11 @@ fn a_visible_spin_is_kept() {
         _ => panic!("helical"),
     };
     assert_eq!(
-        rate(&ccd_enclosure::without_invisible_spin(&s.a)),
+        rate(&ccd_interval::without_invisible_spin(&s.a)),
         Rat::from(5)
     );
     assert_eq!(
-        rate(&ccd_enclosure::without_invisible_spin(&s.b)),
+        rate(&ccd_interval::without_invisible_spin(&s.b)),
         Rat::zero()
     );
 }
@@ -675,7 +684,7 @@ mod honesty {
                 periodic.0, periodic.0, periodic.1,
                 rb[0], rb[1], rb[2], b_center[0], b_center[1], b_center[2],
             ));
-            let options = Options { digits: 15, first_contact_only: first_only };
+            let options = Options { digits: 15, first_contact_only: first_only, ..Options::default() };
             let out = enclosure(&s, &options);
             assert_honest(&s, &out, first_only);
         }

@@ -12,12 +12,14 @@
 mod backend_gmp;
 #[cfg(not(feature = "gmp"))]
 mod backend_num;
+mod convert;
 mod dual;
 mod int;
 mod interval;
 mod rat;
 mod ring;
 
+pub use convert::NotFinite;
 pub use dual::Dual;
 pub use int::Int;
 pub use interval::Interval;

@@ -635,6 +635,18 @@ pub fn estimate(a: &Body, b: &Body, span: &[Rat; 2], t: &Rat, two_double: bool) 
     }
 }
 
+/// The [`Geometry`] of a contact whose computation failed: no single
+/// point when the kernel is not one-dimensional, otherwise unknown with
+/// the reason.
+pub fn failed(e: ContactError) -> Geometry {
+    match e {
+        ContactError::Kernel => Geometry::NotASinglePoint,
+        other => Geometry::Unknown {
+            reason: other.to_string(),
+        },
+    }
+}
+
 #[cfg(test)]
 mod tests;
 

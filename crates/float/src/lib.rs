@@ -23,19 +23,18 @@
 //!    module `bernstein`), and the five `sr` polynomials of Theorem 3.10 are
 //!    computed from it by the Section 4 closed forms
 //!    ([`ccd_subres::closed_forms`], unchanged, over [`BernsteinF64`]);
-//! 2. solve ([`solve_prepared`], module `algorithm`): Algorithm 1's branches
-//!    (Theorems 5.2, 5.4–5.6), candidate roots on `[0, 1]` in increasing
-//!    order by de Casteljau subdivision and Descartes' rule of signs
-//!    ([`Roots`], module `roots`), the touch test of Theorem 3.10(2) at each
-//!    ([`ccd_subres::classify_with`] on [`Approx`] signs, module `approx`),
-//!    the states between contacts (Theorem 5.1), and the [`Outcome`] laid
-//!    out by the exact path's own rules
-//!    ([`ccd_timeline::Findings::into_outcome`]), with `certified: false`, so every instant is marked
-//!    uncertified.
+//! 2. solve: [`Float`] answers the questions of the one Algorithm 1
+//!    (`ccd_algorithm::run`, shared with the exact and interval paths):
+//!    candidate roots on `[0, 1]` in increasing order by de Casteljau
+//!    subdivision and Descartes' rule of signs ([`Roots`], module `roots`),
+//!    and the signs of Theorem 3.10 from [`Approx`] values within
+//!    [`TOL_SIGN`] (module `oracle`); every instant of the outcome is marked
+//!    uncertified. [`solve_prepared`] runs it without contact geometry.
 //!
 //! ```
 //! use ccd_arith::Rat;
-//! use ccd_float::{solve, Options};
+//! use ccd_algorithm::Options;
+//! use ccd_float::solve;
 //! use ccd_motion::CharPoly;
 //! use ccd_poly::ZPoly;
 //! // Two unit spheres, centres d = 3 − 2u apart: they touch at u = 1/2.
@@ -44,7 +43,7 @@
 //! let k = |v: i64| ZPoly::from_i64s(&[v]);
 //! let c3 = -(&m + &k(2));
 //! let f = CharPoly { coeffs: [k(-1), c3.clone(), -(&(&k(2) * &m) + &k(2)), c3, k(-1)] };
-//! let out = solve(&f, &[Rat::zero(), Rat::one()], &Options { first_contact_only: true });
+//! let out = solve(&f, &[Rat::zero(), Rat::one()], &Options { first_contact_only: true, ..Options::default() });
 //! let first = out.first_contact.unwrap();
 //! assert!((first.midpoint().to_f64() - 0.5).abs() < 1e-12 && !first.certified);
 //! assert!(!out.complete);
@@ -52,18 +51,16 @@
 
 #![warn(missing_docs)]
 
-mod algorithm;
 mod approx;
 mod bernstein;
+mod oracle;
 mod roots;
 mod setup;
 
-pub use algorithm::{
-    solve, solve_prepared, Options, TOL_IDENTICALLY_ZERO, TOL_ROOT_NOISE, TOL_SIGN,
-};
 pub use approx::Approx;
 pub use bernstein::BernsteinF64;
 pub use ccd_motion::CharPoly;
 pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
+pub use oracle::{solve, solve_prepared, Float, TOL_IDENTICALLY_ZERO, TOL_ROOT_NOISE, TOL_SIGN};
 pub use roots::{Candidate, RootKind, Roots, CLUSTER_WIDTH, ROOT_WIDTH};
 pub use setup::{certified_bernstein, prepare, Prepared};

@@ -34,6 +34,13 @@ impl<P> Bezier<P> {
     pub fn degree(&self) -> usize {
         self.points.len().saturating_sub(1)
     }
+    /// The polynomial Bézier curve with these control points (no weights).
+    pub fn polynomial(points: Vec<P>) -> Self {
+        Bezier {
+            points,
+            weights: None,
+        }
+    }
 }
 
 /// The centre curve of a helical motion:
@@ -113,6 +120,13 @@ impl Motion {
     pub fn at_origin() -> Motion {
         Motion::Static {
             center: [Rat::zero(), Rat::zero(), Rat::zero()],
+            orientation: Motion::identity(),
+        }
+    }
+    /// A translation along `center` with the identity orientation.
+    pub fn translation(center: Bezier<Vec3>) -> Motion {
+        Motion::Translation {
+            center,
             orientation: Motion::identity(),
         }
     }

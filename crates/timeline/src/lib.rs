@@ -193,13 +193,74 @@ pub struct Stats {
     pub deg_sr0: Option<usize>,
     /// Degree of the polynomial whose roots were the candidates.
     pub deg_candidates: Option<usize>,
-    /// Which branch of Algorithm 1 ran.
-    pub branch: &'static str,
+    /// Which arithmetic answered.
+    pub path: Path,
+    /// Which branch of Algorithm 1 ran (`None` when the query stopped at
+    /// `t0` before choosing one).
+    pub branch: Option<Branch>,
     /// Candidate instants examined.
     pub candidates: usize,
     /// The exact path formed `sr0` (or `sr11`) as a polynomial: its
     /// certified `f64` filter could not decide every sign, or `sr0 ≡ 0`.
     pub sr0_formed: bool,
+}
+
+/// The arithmetic that answered a query (`--arithmetic`, or the interval
+/// path that non-rational motions take).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Path {
+    /// Exact and certified (rational motions).
+    #[default]
+    Exact,
+    /// `f64`, not certified (the paper's Table 3 setting).
+    Float,
+    /// Certified interval enclosures where they decide (helical motions).
+    Interval,
+}
+
+/// The branch of Algorithm 1 (Section 5) a query took.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Branch {
+    /// `sr0 ≢ 0`: the candidates are the roots of `sr0` (Theorem 5.2).
+    Sr0,
+    /// `sr0 ≡ 0`, `sr11 ≢ 0`: the candidates are the roots of `sr11`, or
+    /// the bodies touch throughout (Theorems 5.4, 5.5).
+    Sr11,
+    /// `sr0 ≡ sr11 ≡ 0`: the state at `t0` holds throughout (Theorem 5.6).
+    Throughout,
+    /// `sr0` was neither proven nonzero at a sample nor identically zero
+    /// (interval path): the span is undecided.
+    Sr0Undecided,
+    /// `sr0 ≡ 0` was proven but `sr11` was neither proven nonzero at a
+    /// sample nor identically zero (interval path).
+    Sr11Undecided,
+}
+
+impl Branch {
+    /// The name the reports and the JSON `stats.branch` use on `path`.
+    pub fn name(self, path: Path) -> &'static str {
+        match (path, self) {
+            (Path::Interval, Branch::Sr0) => "interval: sr0",
+            (Path::Interval, Branch::Sr0Undecided) => "interval: sr0 undecided",
+            (Path::Interval, Branch::Sr11) => "interval: sr0 = 0 (structure), sr11",
+            (Path::Interval, Branch::Sr11Undecided) => {
+                "interval: sr0 = 0 (structure), sr11 undecided"
+            }
+            (Path::Interval, Branch::Throughout) => "interval: sr0 = 0 (structure), sr11 = 0",
+            (_, Branch::Sr0 | Branch::Sr0Undecided) => "sr0",
+            (_, Branch::Sr11 | Branch::Sr11Undecided) => "sr0=0, sr11",
+            (_, Branch::Throughout) => "sr0=0, sr11=0",
+        }
+    }
+}
+
+impl Stats {
+    /// [`Branch::name`] of the branch taken, `""` when none was.
+    pub fn branch_name(&self) -> &'static str {
+        self.branch.map_or("", |b| b.name(self.path))
+    }
 }
 
 /// The answer of a CCD query over the span `[t0, t1]`.
@@ -249,137 +310,5 @@ impl Outcome {
             && self.first_contact.as_ref().is_none_or(|c| c.certified)
             && self.gaps.is_empty()
             && self.undecided.is_none()
-    }
-}
-
-/// What a solver found on the normalised span `u ∈ [0, 1]`
-/// (`t = t0 + u·(t1 − t0)`): everything Algorithm 1's last loop needs.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Findings {
-    /// The state at `u = 0`.
-    pub state0: State,
-    /// `Some(state)` when one state holds on the whole span (Theorems 5.5,
-    /// 5.6).
-    pub throughout: Option<State>,
-    /// The touch instants, in increasing order, with disjoint enclosures.
-    pub contacts: Vec<Instant>,
-    /// `false` when the search stopped at the first contact.
-    pub complete: bool,
-    /// `false` when nothing the solver decided is proven (float mode): then
-    /// every instant of the outcome is marked `certified: false`.
-    pub certified: bool,
-}
-
-/// A simple rational in the closed interval `[lo, hi]`, avoiding an end
-/// that may not be taken (`*_incl` false): the sample of a piece.
-pub fn sample_between(lo: &Rat, lo_incl: bool, hi: &Rat, hi_incl: bool) -> Rat {
-    let s = Rat::simplest_in(lo, hi);
-    if (s != *lo || lo_incl) && (s != *hi || hi_incl) && lo != hi {
-        return s;
-    }
-    let quarter = (hi - lo).mul_pow2(-2);
-    Rat::simplest_in(&(lo + &quarter), &(hi - &quarter))
-}
-
-impl Findings {
-    /// The timeline (Theorem 5.1): the span cut at `t0`, the contacts and
-    /// `t1`; each piece's state is `state_at` a sample strictly between its
-    /// ends (contacts are not samples; a non-contact end may be); contacts
-    /// are zero-length `Touch` segments. Times are mapped from `u` to `t`.
-    pub fn into_outcome<E>(
-        self,
-        span: &[Rat; 2],
-        stats: Stats,
-        mut state_at: impl FnMut(&Rat) -> Result<State, E>,
-    ) -> Result<Outcome, E> {
-        let (zero, one) = (Rat::zero(), Rat::one());
-        let start = Instant::exact(zero.clone());
-        let end = Instant::exact(one.clone());
-        let contacts = self.contacts;
-        let mut timeline: Vec<Segment> = Vec::new();
-        let complete = self.complete;
-        let certified = self.certified;
-        if let Some(state) = self.throughout {
-            timeline.push(Segment {
-                state,
-                start: start.clone(),
-                end: end.clone(),
-                certified: true,
-            });
-        } else if !complete && contacts.is_empty() {
-            // Stopped at t0 itself: the bodies are not separate there.
-            timeline.push(Segment {
-                state: self.state0,
-                start: start.clone(),
-                end: start.clone(),
-                certified: true,
-            });
-        } else {
-            let is_exact = |c: &Instant, at: &Rat| c.lo == *at && c.hi == *at;
-            let mut points: Vec<Instant> = Vec::new();
-            if contacts.first().is_none_or(|c| !is_exact(c, &zero)) {
-                points.push(start.clone());
-            }
-            points.extend(contacts.iter().cloned());
-            if complete && contacts.last().is_none_or(|c| !is_exact(c, &one)) {
-                points.push(end.clone());
-            }
-            let is_contact = |i: &Instant| contacts.contains(i);
-            for (k, p) in points.iter().enumerate() {
-                if is_contact(p) {
-                    timeline.push(Segment {
-                        state: State::Touch,
-                        start: p.clone(),
-                        end: p.clone(),
-                        certified: true,
-                    });
-                }
-                if let Some(next) = points.get(k + 1) {
-                    let lo_incl = !(p.lo == p.hi && is_contact(p));
-                    let hi_incl = !(next.lo == next.hi && is_contact(next));
-                    let state = state_at(&sample_between(&p.hi, lo_incl, &next.lo, hi_incl))?;
-                    timeline.push(Segment {
-                        state,
-                        start: p.clone(),
-                        end: next.clone(),
-                        certified: true,
-                    });
-                }
-            }
-        }
-        let first_contact = match (self.state0, self.throughout) {
-            (State::Separate, Some(State::Separate)) => None,
-            (State::Separate, None) => timeline
-                .iter()
-                .find(|s| s.state != State::Separate)
-                .map(|s| s.start.clone()),
-            _ => Some(start),
-        };
-        let dt = &span[1] - &span[0];
-        let map = |i: &Instant| Instant {
-            lo: &span[0] + &(&i.lo * &dt),
-            hi: &span[0] + &(&i.hi * &dt),
-            certified: i.certified && certified,
-        };
-        Ok(Outcome {
-            collision_free: first_contact.is_none() && complete,
-            first_contact: first_contact.as_ref().map(map),
-            contacts: contacts.iter().map(map).collect(),
-            timeline: timeline
-                .iter()
-                .map(|s| Segment {
-                    state: s.state,
-                    start: map(&s.start),
-                    end: map(&s.end),
-                    certified: s.certified && certified,
-                })
-                .collect(),
-            complete,
-            gaps: Vec::new(),
-            undecided: None,
-            span: span.clone(),
-            stats,
-            geometry: Vec::new(),
-        })
     }
 }

@@ -1,22 +1,17 @@
-//! Algorithm 1 of the paper (Section 5) in `f64`: the structure of the exact
-//! path (`ccd_exact`'s `algorithm::run`) with every sign read from floats.
+//! The float arithmetic's answers to Algorithm 1 (`ccd-algorithm`): every
+//! sign read from `f64` values of the closed forms, with tolerances.
 
-use crate::approx::Approx;
 use crate::bernstein::BernsteinF64;
-use crate::roots::Roots;
+use crate::roots::{Candidate, Roots};
 use crate::setup::{prepare, Prepared};
+use ccd_algorithm::{
+    possible_with, At, Candidates, CcdError, Decided, Found, Options, Oracle, SignSet, Signs,
+    Vanishing, VarSet,
+};
 use ccd_arith::Rat;
-use ccd_motion::CharPoly;
-use ccd_subres::{classify_with, closed_forms, sign_variations, Configuration, Quantity};
-use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
-
-/// What a float query asks for.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Options {
-    /// Stop at the earliest instant at which the bodies are not separate
-    /// (later roots of the candidate polynomial are never looked for).
-    pub first_contact_only: bool,
-}
+use ccd_motion::{Body, CharPoly};
+use ccd_subres::{closed_forms, sign_variations, Quantity, QuarticInvariants};
+use ccd_timeline::{Geometry, Instant, Outcome, Path, State, Stats};
 
 /// Relative tolerance under which an `sr` polynomial counts as identically
 /// zero: every Bernstein coefficient within `1e-10` of its magnitude
@@ -40,62 +35,36 @@ pub const TOL_ROOT_NOISE: f64 = 1e-13;
 /// known only to its bracket.
 pub const TOL_SIGN: f64 = 1e-10;
 
-/// Why a lazy Theorem 3.10 decision stopped: it needed `Var`, which is read
-/// only on the way to "separate", so the instant is not a touch.
-struct NotTouch;
-
-/// Theorem 3.10 at `u`, with the signs of `f`'s coefficients and of the
-/// closed forms evaluated in `f64` there; `zero` lists quantities known to
-/// vanish at `u` (identically, or because `u` is a root of them), whose
-/// float values are noise. With `var = false` the decision stops (as not a
-/// touch) where it would need the sign variations.
-fn configuration_at(
-    p: &Prepared,
-    u: f64,
-    zero: &[Quantity],
+/// `f64` signs at `u`: the closed forms of `f`'s coefficients there, each
+/// zero within `tol` of its magnitude; `identically` read as 0.
+struct FloatSigns<'a> {
+    inv: QuarticInvariants<crate::Approx>,
+    f: [crate::Approx; 5],
     tol: f64,
-    var: bool,
-) -> Result<Configuration, NotTouch> {
-    let fu: [Approx; 5] = p.f_at(u);
-    let inv = closed_forms(&fu);
-    classify_with(|q| {
-        if zero.contains(&q) {
-            return Ok(0);
-        }
-        match q {
-            Quantity::Var if var => Ok(sign_variations(&fu.map(|c| c.sign(tol))) as i32),
-            Quantity::Var => Err(NotTouch),
-            other => Ok(inv.get(other).map_or(0, |x| x.sign(tol))),
-        }
-    })
+    identically: &'a [Quantity],
 }
 
-/// The configuration at `u` (Theorem 3.10), `identically` listing the
-/// quantities known to vanish on the whole span.
-fn state_at(p: &Prepared, u: f64, identically: &[Quantity], tol: f64) -> State {
-    match configuration_at(p, u, identically, tol, true) {
-        Ok(c) => State::from(c),
-        Err(NotTouch) => unreachable!("Var is allowed"),
+impl<'a> FloatSigns<'a> {
+    fn at(p: &Prepared, u: f64, tol: f64, identically: &'a [Quantity]) -> FloatSigns<'a> {
+        let f = p.f_at(u);
+        FloatSigns {
+            inv: closed_forms(&f),
+            f,
+            tol,
+            identically,
+        }
     }
 }
 
-/// Is the configuration at the candidate `u` an external touch?
-/// Theorem 3.10(2) with `zero` the quantities the candidate is a root of.
-fn touches_at(p: &Prepared, u: f64, zero: &[Quantity]) -> bool {
-    matches!(
-        configuration_at(p, u, zero, TOL_SIGN, false),
-        Ok(Configuration::ExternalTouch)
-    )
-}
-
-/// The state on a piece between contacts (Theorem 5.1), at its sample
-/// `u`. A piece between contacts cannot be a touch; if floats say so (a
-/// value within [`TOL_SIGN`] of zero, e.g. next to a contact they missed),
-/// the plain `f64` signs decide.
-fn state_on(p: &Prepared, u: f64, identically: &[Quantity]) -> State {
-    match state_at(p, u, identically, TOL_SIGN) {
-        State::Touch => state_at(p, u, identically, 0.0),
-        state => state,
+impl Signs for FloatSigns<'_> {
+    fn sign(&mut self, q: Quantity) -> SignSet {
+        if self.identically.contains(&q) {
+            return SignSet::exactly(0);
+        }
+        SignSet::exactly(self.inv.get(q).map_or(0, |x| x.sign(self.tol)))
+    }
+    fn variations(&mut self) -> VarSet {
+        VarSet::exactly(sign_variations(&self.f.map(|c| c.sign(self.tol))))
     }
 }
 
@@ -117,13 +86,145 @@ fn rat(u: f64) -> Rat {
     Rat::from_f64_exact(u).expect("a finite float")
 }
 
+/// The float arithmetic over a prepared `f(λ; u)`, in `u ∈ [0, 1]`.
+/// Nothing it answers is certified.
+pub struct Float<'p> {
+    p: &'p Prepared,
+    span: [Rat; 2],
+    unit: [Rat; 2],
+    /// The quantities that vanish identically to [`TOL_IDENTICALLY_ZERO`].
+    identically: Vec<Quantity>,
+    /// The bodies, for the contact point estimates.
+    bodies: Option<(&'p Body, &'p Body)>,
+}
+
+impl<'p> Float<'p> {
+    /// The float arithmetic of `p` on `span`; with `bodies`, contacts get
+    /// `f64` estimates of their point and normal.
+    pub fn new(
+        p: &'p Prepared,
+        span: &[Rat; 2],
+        bodies: Option<(&'p Body, &'p Body)>,
+    ) -> Float<'p> {
+        let sr0_zero = p.inv.sr0.is_negligible(TOL_IDENTICALLY_ZERO);
+        let sr11_zero = sr0_zero && p.inv.sr11.is_negligible(TOL_IDENTICALLY_ZERO);
+        let identically = match (sr0_zero, sr11_zero) {
+            (false, _) => vec![],
+            (true, false) => vec![Quantity::Sr0],
+            (true, true) => vec![Quantity::Sr0, Quantity::Sr11],
+        };
+        Float {
+            p,
+            span: span.clone(),
+            unit: [Rat::zero(), Rat::one()],
+            identically,
+            bodies,
+        }
+    }
+}
+
+impl Oracle for Float<'_> {
+    type Root = Candidate;
+    const PATH: Path = Path::Float;
+
+    fn domain(&self) -> &[Rat; 2] {
+        &self.unit
+    }
+
+    fn time(&self, u: &Rat) -> Rat {
+        let [t0, t1] = &self.span;
+        t0 + &(u * &(t1 - t0))
+    }
+
+    /// Signs within [`TOL_SIGN`] of zero read as zero.
+    fn signs<'a>(&'a self, at: At<'a, Candidate>, _level: usize) -> Box<dyn Signs + 'a> {
+        let u = match at {
+            At::Sample(x) => x.to_f64(),
+            At::Root(c) => c.estimate(),
+        };
+        Box::new(FloatSigns::at(self.p, u, TOL_SIGN, &self.identically))
+    }
+
+    fn guess(&self, _u: &Rat) -> State {
+        unreachable!("float signs are always single")
+    }
+
+    fn vanishes(&mut self, q: Quantity) -> Vanishing {
+        if self.identically.contains(&q) {
+            Vanishing::Identically
+        } else if q == Quantity::Sr11 {
+            Vanishing::Not(Some(rat(non_root_dyadic(&self.p.inv.sr11))))
+        } else {
+            Vanishing::Not(None)
+        }
+    }
+
+    fn candidates(&self, q: Quantity, attempt: usize) -> Option<Candidates<'_, Candidate>> {
+        let poly = match (q, attempt) {
+            (Quantity::Sr0, 0) => &self.p.inv.sr0,
+            (Quantity::Sr11, 0) => &self.p.inv.sr11,
+            _ => return None,
+        };
+        Some(Candidates {
+            degree: Some(poly.degree()),
+            roots: Box::new(Roots::new(poly, TOL_ROOT_NOISE).map(Found::Root)),
+        })
+    }
+
+    fn ends(&self, c: &Candidate) -> (Rat, Rat) {
+        (rat(c.lo), rat(c.hi))
+    }
+
+    /// The float bracket as it stands (already at `f64` resolution).
+    fn refine(&self, c: &mut Candidate, _q: Quantity) -> Instant {
+        let (lo, hi) = self.ends(c);
+        Instant {
+            lo,
+            hi,
+            certified: false,
+        }
+    }
+
+    /// An `f64` estimate at the contact's midpoint (case (2b) for the roots
+    /// of `sr11`).
+    fn geometry(&self, _c: &mut Candidate, zeros: &[Quantity], instant: &Instant) -> Geometry {
+        let Some((a, b)) = self.bodies else {
+            return Geometry::Unknown {
+                reason: "no bodies given".into(),
+            };
+        };
+        let t = self.time(&instant.midpoint());
+        ccd_contact::estimate(a, b, &self.span, &t, zeros.contains(&Quantity::Sr11))
+    }
+
+    /// A piece between contacts cannot be a touch; if floats say so (a
+    /// value within [`TOL_SIGN`] of zero, e.g. next to a contact they
+    /// missed), the plain `f64` signs decide.
+    fn touch_between_contacts(&self, u: &Rat, d: Decided) -> Result<Decided, CcdError> {
+        let mut plain = FloatSigns::at(self.p, u.to_f64(), 0.0, &self.identically);
+        Ok(possible_with(&mut plain, &[], false)
+            .single()
+            .map_or(d, |c| Decided {
+                state: State::from(c),
+                certified: true,
+            }))
+    }
+
+    fn stats(&self, stats: &mut Stats) {
+        stats.deg_f = self.p.deg_f;
+        stats.deg_sr0 =
+            (!self.identically.contains(&Quantity::Sr0)).then(|| self.p.inv.sr0.degree());
+    }
+}
+
 /// Float Algorithm 1 on an exact characteristic polynomial: [`prepare`]
 /// then [`solve_prepared`]. Not certified: every instant of the outcome has
 /// `certified: false`.
 ///
 /// ```
+/// use ccd_algorithm::Options;
 /// use ccd_arith::Rat;
-/// use ccd_float::{solve, Options};
+/// use ccd_float::solve;
 /// use ccd_motion::CharPoly;
 /// use ccd_poly::ZPoly;
 /// use ccd_timeline::State;
@@ -144,90 +245,17 @@ pub fn solve(f: &CharPoly, span: &[Rat; 2], options: &Options) -> Outcome {
 }
 
 /// Float Algorithm 1 on a prepared `f(λ; u)` (the solve stage, timed
-/// separately from the set-up [`prepare`]).
-///
-/// * `sr0 ≢ 0` (to [`TOL_IDENTICALLY_ZERO`]): the candidates are the roots
-///   of `sr0` (Theorem 5.2);
-/// * `sr0 ≡ 0`, `sr11 ≢ 0`: touching at one non-root δ of `sr11` means
-///   touching throughout (Theorem 5.5), otherwise the candidates are the
-///   roots of `sr11` (Theorem 5.4);
-/// * `sr0 ≡ sr11 ≡ 0`: the state at `t0` holds throughout (Theorem 5.6).
-///
-/// Each candidate is kept when Theorem 3.10(2) says "touch" in `f64` at its
-/// float estimate ([`TOL_SIGN`]); with `first_contact_only`, the walk stops
-/// at the first kept one (and does not start when the bodies are not
-/// separate at `t0`). The states between contacts are sampled (Theorem
-/// 5.1). The outcome is laid out by the exact path's rules
-/// ([`ccd_timeline::Findings::into_outcome`]); instants are the candidates'
-/// float brackets converted exactly to rationals and mapped to `t`, and
-/// every instant has `certified: false`.
+/// separately from the set-up [`prepare`]), without contact geometry: the
+/// generic `ccd_algorithm::run` over [`Float`]. Not certified: every
+/// instant has `certified: false`.
 pub fn solve_prepared(p: &Prepared, span: &[Rat; 2], options: &Options) -> Outcome {
-    let first_only = options.first_contact_only;
-    let sr0_zero = p.inv.sr0.is_negligible(TOL_IDENTICALLY_ZERO);
-    let sr11_zero = sr0_zero && p.inv.sr11.is_negligible(TOL_IDENTICALLY_ZERO);
-    let identically: &[Quantity] = match (sr0_zero, sr11_zero) {
-        (false, _) => &[],
-        (true, false) => &[Quantity::Sr0],
-        (true, true) => &[Quantity::Sr0, Quantity::Sr11],
+    let options = Options {
+        contact_geometry: false,
+        ..options.clone()
     };
-    let mut stats = Stats {
-        deg_f: p.deg_f,
-        deg_sr0: (!sr0_zero).then(|| p.inv.sr0.degree()),
-        ..Stats::default()
-    };
-    let state0 = state_at(p, 0.0, identically, TOL_SIGN);
-    let stop_early = first_only && state0 != State::Separate;
-
-    let mut throughout: Option<State> = None;
-    let candidates: Option<(&BernsteinF64, &[Quantity])> = if !sr0_zero {
-        stats.branch = "sr0";
-        Some((&p.inv.sr0, &[Quantity::Sr0]))
-    } else if !sr11_zero {
-        stats.branch = "sr0=0, sr11";
-        let delta = non_root_dyadic(&p.inv.sr11);
-        if state_at(p, delta, identically, TOL_SIGN) == State::Touch {
-            throughout = Some(State::Touch);
-            None
-        } else {
-            Some((&p.inv.sr11, &[Quantity::Sr0, Quantity::Sr11]))
-        }
-    } else {
-        stats.branch = "sr0=0, sr11=0";
-        throughout = Some(state0);
-        None
-    };
-
-    let mut found = Findings {
-        state0,
-        // Stopped at t0 (not separate there): the answer is t0 itself.
-        throughout: throughout.filter(|_| !stop_early),
-        contacts: Vec::new(),
-        complete: !stop_early,
-        certified: false,
-    };
-    if let (Some((poly, zeros)), false) = (candidates, stop_early) {
-        stats.deg_candidates = Some(poly.degree());
-        for c in Roots::new(poly, TOL_ROOT_NOISE) {
-            stats.candidates += 1;
-            if touches_at(p, c.estimate(), zeros) {
-                found.contacts.push(Instant {
-                    lo: rat(c.lo),
-                    hi: rat(c.hi),
-                    certified: false,
-                });
-                if first_only {
-                    found.complete = false;
-                    break;
-                }
-            }
-        }
-    }
-    let laid_out = found.into_outcome(span, stats, |u| {
-        Ok::<State, std::convert::Infallible>(state_on(p, u.to_f64(), identically))
-    });
-    match laid_out {
+    match ccd_algorithm::run(Float::new(p, span, None), &options) {
         Ok(out) => out,
-        Err(never) => match never {},
+        Err(e) => unreachable!("the float arithmetic raises no error: {e}"),
     }
 }
 
@@ -262,7 +290,7 @@ mod tests {
         let f = spheres(&[9, -36, 36]);
         let out = solve(&f, &unit(), &Options::default());
         assert_eq!(states(&out), [Separate, Touch, Overlap, Touch, Separate]);
-        assert_eq!(out.stats.branch, "sr0=0, sr11");
+        assert_eq!(out.stats.branch, Some(ccd_timeline::Branch::Sr11));
         assert_eq!(out.stats.deg_sr0, None);
         let got: Vec<f64> = out.contacts.iter().map(|c| c.midpoint().to_f64()).collect();
         assert!((got[0] - 1.0 / 6.0).abs() < 1e-15 && (got[1] - 5.0 / 6.0).abs() < 1e-15);
@@ -273,6 +301,7 @@ mod tests {
             &unit(),
             &Options {
                 first_contact_only: true,
+                ..Options::default()
             },
         );
         assert_eq!(states(&first), [Separate, Touch]);
@@ -285,7 +314,7 @@ mod tests {
     #[test]
     fn touching_throughout_is_theorem_5_6() {
         let out = solve(&spheres(&[4]), &unit(), &Options::default());
-        assert_eq!(out.stats.branch, "sr0=0, sr11=0");
+        assert_eq!(out.stats.branch, Some(ccd_timeline::Branch::Throughout));
         assert_eq!(states(&out), [Touch]);
         assert_eq!(
             out.first_contact.as_ref().map(|i| i.lo.clone()),
@@ -311,6 +340,7 @@ mod tests {
             &unit(),
             &Options {
                 first_contact_only: true,
+                ..Options::default()
             },
         );
         assert_eq!(states(&first), [Touch]);

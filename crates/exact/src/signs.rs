@@ -28,6 +28,7 @@ use ccd_poly::ZPoly;
 use ccd_solver::{ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, Quantity};
 use std::cell::RefCell;
+use std::rc::Rc;
 use std::sync::OnceLock;
 
 /// Bits kept in front of the binary point of the largest scaled
@@ -36,8 +37,8 @@ const VIEW_BITS: i64 = 100;
 
 /// The coefficients of `f(λ; t)` (high → low in λ) and what the sign models
 /// need of them, shared by the models of all quantities.
-pub(crate) struct Coefficients<'a> {
-    f: &'a CharPoly,
+pub(crate) struct Coefficients {
+    f: CharPoly,
     /// `f_k · 2^(−shift)` in `f64`.
     views: [ScaledPoly; 5],
     shift: i64,
@@ -58,13 +59,13 @@ pub(crate) struct Coefficients<'a> {
 /// the second derivative.
 type Jet2 = Dual<Dual<Interval>>;
 
-impl<'a> Coefficients<'a> {
-    pub(crate) fn new(f: &'a CharPoly) -> Coefficients<'a> {
+impl Coefficients {
+    pub(crate) fn new(f: CharPoly) -> Coefficients {
         let bits = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0) as i64;
         let shift = (bits - VIEW_BITS).max(0);
         Coefficients {
-            f,
             views: std::array::from_fn(|k| ScaledPoly::with_shift(&f.coeffs[k], shift)),
+            f,
             shift,
             polys: Default::default(),
             extremes: Default::default(),
@@ -110,10 +111,15 @@ impl<'a> Coefficients<'a> {
         }
     }
 
-    /// The sign model of `q` (not [`Quantity::Var`]).
-    pub(crate) fn model(&self, q: Quantity) -> ClosedForm<'_, 'a> {
-        ClosedForm { f: self, q }
+    /// `f(λ; u)`.
+    pub(crate) fn char_poly(&self) -> &CharPoly {
+        &self.f
     }
+}
+
+/// The sign model of `q` (not [`Quantity::Var`]) over shared coefficients.
+pub(crate) fn model(f: &Rc<Coefficients>, q: Quantity) -> ClosedForm {
+    ClosedForm { f: f.clone(), q }
 }
 
 /// The cache slot of a closed form.
@@ -139,13 +145,13 @@ fn weight(q: Quantity) -> i64 {
 
 /// The closed form `q` of `f`'s coefficients as a [`SignModel`], with
 /// `σ = 2^(−shift·w)`.
-#[derive(Clone, Copy)]
-pub(crate) struct ClosedForm<'c, 'a> {
-    f: &'c Coefficients<'a>,
+#[derive(Clone)]
+pub struct ClosedForm {
+    f: Rc<Coefficients>,
     q: Quantity,
 }
 
-impl ClosedForm<'_, '_> {
+impl ClosedForm {
     /// `q` of five ring values.
     fn of<R: RingOps>(&self, values: &[R; 5]) -> R {
         closed_form(values, self.q).expect("a closed form, not Var")
@@ -185,7 +191,7 @@ impl ClosedForm<'_, '_> {
     }
 }
 
-impl ClosedForm<'_, '_> {
+impl ClosedForm {
     /// Enclosures of `(f_k, f_k′, f_k″)` over `x` (scaled), cached for the
     /// last `x`.
     fn box_jets(&self, x: Interval) -> [Jet2; 5] {
@@ -213,7 +219,7 @@ impl ClosedForm<'_, '_> {
     }
 }
 
-impl SignModel for ClosedForm<'_, '_> {
+impl SignModel for ClosedForm {
     /// The closed form over `f64` intervals of `f_k(X)` (the derivatives
     /// only if [`SignModel::enclose_second`] already needed them there).
     fn enclose(&self, x: Interval) -> Interval {
@@ -300,12 +306,12 @@ mod tests {
         ) {
             let coeffs: [ZPoly; 5] = std::array::from_fn(|k| poly(&raw[k]));
             let cp = CharPoly { coeffs: coeffs.clone() };
-            let f = Coefficients::new(&cp);
+            let f = Rc::new(Coefficients::new(cp));
             let inv = closed_forms(&coeffs);
             let m = Rat::dyadic(Int::from(a), j);
             let x = Rat::from_frac(a, b);
             for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10] {
-                let model = f.model(q);
+                let model = model(&f, q);
                 let exact = inv.get(q).expect("a polynomial");
                 prop_assert_eq!(model.exact(), exact);
                 prop_assert_eq!(model.sign_at(&x), exact.sign_at(&x));

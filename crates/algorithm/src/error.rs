@@ -1,10 +1,11 @@
-//! Errors of the front door: every one names what was wrong and where.
+//! Why a query has no answer: every error names what was wrong and where.
 
 use ccd_motion::MotionError;
 use ccd_scene::SceneError;
 
 /// Why a query has no answer.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum CcdError {
     /// The scene is not valid (the message starts with the field).
     #[error(transparent)]
@@ -25,9 +26,6 @@ pub enum CcdError {
         /// Why.
         reason: String,
     },
-    /// The interval path for non-rational motions refused the scene.
-    #[error(transparent)]
-    Enclosure(#[from] ccd_enclosure::EnclosureError),
     /// The exact path reached one of its documented bounds (see
     /// docs/termination.md): the scene's numbers are too long for its
     /// degrees to be answered exactly in about a second. Every query below
@@ -38,8 +36,8 @@ pub enum CcdError {
     )]
     Effort {
         /// Which bound: `exact work` (word operations of root isolation,
-        /// [`ccd_solver::MAX_EXACT_WORK`]) or `exact size` (bits of the
-        /// closed forms, [`crate::algorithm::MAX_EXACT_BITS`]).
+        /// `ccd_solver::MAX_EXACT_WORK`) or `exact size` (bits of the
+        /// closed forms, `ccd_exact_arith::MAX_EXACT_BITS`).
         limit: &'static str,
         /// The unit of `bound` and `reached`.
         unit: &'static str,
@@ -55,7 +53,7 @@ pub enum CcdError {
 
 impl CcdError {
     /// Attaches the body (`a` or `b`) and the field that a motion error is about.
-    pub(crate) fn motion(body: &str, source: MotionError) -> CcdError {
+    pub fn motion(body: &str, source: MotionError) -> CcdError {
         let field = match source {
             MotionError::QuaternionVanishes { .. } => "motion.orientation",
             MotionError::SingularAffine { .. } => "motion.matrix",

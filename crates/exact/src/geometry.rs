@@ -1,17 +1,17 @@
-//! Contact geometry on each path (`ccd-contact` does the math): the
-//! certified point and normal at each exact contact, refining the contact's
-//! enclosure when the box is too wide; float estimates; helical enclosures
-//! where the case of Theorem 3.10(2) is proven, marked where not.
+//! Contact geometry on the exact path (`ccd-contact` does the math): the
+//! certified point and normal at each contact, refining the contact's
+//! enclosure when the box is too wide.
 
-use crate::signs::Coefficients;
-use crate::Options;
+use crate::signs::{model, Coefficients};
+
 use ccd_arith::{Int, Rat};
-use ccd_contact::{enclose, from_quadrics, Case, ContactError, Goal};
+use ccd_contact::{enclose, from_quadrics, Case, Goal};
 use ccd_motion::PlacedQuadric;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, SignModel};
-use ccd_subres::{closed_form, Quantity};
-use ccd_timeline::{Box3, Geometry, Outcome};
+use ccd_subres::Quantity;
+use ccd_timeline::{Box3, Geometry};
+use std::rc::Rc;
 
 /// The exact path's stages, cheapest first: how far to narrow the
 /// contact's enclosure first (a factor `2^−bits`) and the precisions then
@@ -22,32 +22,23 @@ const STAGES: [(i64, &[u32]); 4] = [(0, &[53]), (20, &[53]), (64, &[128]), (64, 
 /// What the exact path needs to compute the geometry of its contacts.
 pub(crate) struct Bodies<'a> {
     scene: &'a Scene,
-    a: &'a PlacedQuadric,
-    b: &'a PlacedQuadric,
+    pub(crate) a: PlacedQuadric,
+    pub(crate) b: PlacedQuadric,
     goal: Goal,
-}
-
-fn failed(e: ContactError) -> Geometry {
-    match e {
-        ContactError::Kernel => Geometry::NotASinglePoint,
-        other => Geometry::Unknown {
-            reason: other.to_string(),
-        },
-    }
 }
 
 impl<'a> Bodies<'a> {
     pub(crate) fn new(
         scene: &'a Scene,
-        a: &'a PlacedQuadric,
-        b: &'a PlacedQuadric,
-        opts: &Options,
+        a: PlacedQuadric,
+        b: PlacedQuadric,
+        digits: u32,
     ) -> Bodies<'a> {
         Bodies {
             scene,
             a,
             b,
-            goal: Goal::new(&scene.a, &scene.b, opts.digits),
+            goal: Goal::new(&scene.a, &scene.b, digits),
         }
     }
 
@@ -81,11 +72,11 @@ impl<'a> Bodies<'a> {
     pub(crate) fn exact<M: SignModel + Clone>(
         &self,
         r: &mut RealRoot<M>,
-        coefficients: &Coefficients,
+        coefficients: &Rc<Coefficients>,
         zeros: &[Quantity],
     ) -> Geometry {
         let case = if zeros.contains(&Quantity::Sr11)
-            || r.sign_with(&coefficients.model(Quantity::Sr11)) == 0
+            || r.sign_with(&model(coefficients, Quantity::Sr11)) == 0
         {
             Case::TwoDouble
         } else {
@@ -115,55 +106,10 @@ impl<'a> Bodies<'a> {
         match last {
             // Certified, only wider than the goal.
             Some(Ok(g)) => g,
-            Some(Err(e)) => failed(e),
+            Some(Err(e)) => ccd_contact::failed(e),
             None => Geometry::Unknown {
                 reason: "no evaluation".into(),
             },
         }
     }
-}
-
-/// Float mode: an `f64` estimate at the midpoint of each contact (the
-/// paper's setting, `certified: false`); the `sr0 ≡ 0` branch's contacts
-/// are roots of `sr11`, case (2b).
-pub(crate) fn estimates(scene: &Scene, outcome: &Outcome) -> Vec<Geometry> {
-    let two_double = outcome.stats.branch.contains("sr11");
-    outcome
-        .contacts
-        .iter()
-        .map(|c| ccd_contact::estimate(&scene.a, &scene.b, &scene.span, &c.midpoint(), two_double))
-        .collect()
-}
-
-/// Helical scenes: the contact's time enclosure as it stands (this path
-/// does not refine it further), evaluated at increasing precision. Case
-/// (2a) is proven when `sr11` excludes 0 on the enclosure, case (2b) when
-/// the contacts are the roots of `sr11` with `sr0 ≡ 0` proven by
-/// structure; otherwise, and for an uncertified instant, the boxes are
-/// computed but marked `certified: false`.
-pub(crate) fn helical(scene: &Scene, outcome: &Outcome, opts: &Options) -> Vec<Geometry> {
-    let goal = Goal::new(&scene.a, &scene.b, opts.digits);
-    let sr11_structural = outcome.stats.branch.contains("(structure), sr11");
-    outcome
-        .contacts
-        .iter()
-        .map(|c| {
-            let t =
-                ccd_arith::Interval::from_rat(&c.lo).hull(&ccd_arith::Interval::from_rat(&c.hi));
-            let (_, qa, qb) =
-                ccd_enclosure::centred_quadrics(&scene.a, &scene.b, &scene.span, &t, 53);
-            let f = ccd_quadric::characteristic(&qa, &qb);
-            let sr11_nonzero = closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
-            let (case, proven) = if sr11_nonzero {
-                (Case::Simple, true)
-            } else {
-                (Case::TwoDouble, sr11_structural)
-            };
-            let certified = c.certified && proven;
-            let (a, b, span) = (&scene.a, &scene.b, &scene.span);
-            let all = &ccd_contact::PRECISIONS;
-            enclose((a, b, span), (&c.lo, &c.hi), case, &goal, certified, all)
-                .unwrap_or_else(failed)
-        })
-        .collect()
 }

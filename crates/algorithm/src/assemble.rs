@@ -1,0 +1,324 @@
+//! The timeline (Theorem 5.1): the span cut at `t0`, the contacts and gaps
+//! the walk found, and `t1`; each piece's state read at a rational sample
+//! inside it; then the verdicts (first contact, collision-free, complete).
+
+use crate::oracle::{Decided, Item, Oracle};
+use crate::run::state_at;
+use crate::{CcdError, Options};
+use ccd_arith::Rat;
+use ccd_subres::Quantity;
+use ccd_timeline::{Gap, Geometry, Instant, Outcome, Path, Segment, State, Stats, Witness};
+
+/// What the walk over the candidates leaves between pieces of constant
+/// state.
+pub(crate) enum Break<R> {
+    /// A contact (an external touch) with its root, when there is one to
+    /// compute the geometry at.
+    Contact(Instant, Option<R>),
+    /// An undecided piece `[lo, hi]` and why.
+    Gap(Rat, Rat, &'static str),
+}
+
+impl<R> Break<R> {
+    fn lo(&self) -> &Rat {
+        match self {
+            Break::Contact(c, _) => &c.lo,
+            Break::Gap(lo, _, _) => lo,
+        }
+    }
+}
+
+/// The breaks of one walk, in order, and the quantities that vanish at its
+/// contacts.
+pub(crate) struct Walk<R> {
+    pub(crate) breaks: Vec<Break<R>>,
+    pub(crate) zeros: &'static [Quantity],
+}
+
+impl<R> Default for Walk<R> {
+    fn default() -> Self {
+        Walk {
+            breaks: Vec::new(),
+            zeros: &[],
+        }
+    }
+}
+
+impl<R> Walk<R> {
+    /// Appends a break clipped to `[d0, d1]` (an enclosure reaching past an
+    /// end may hold a root outside the span, so it is no longer certified),
+    /// merged into the previous gap when it is an overlapping gap.
+    pub(crate) fn push(&mut self, mut b: Break<R>, d0: &Rat, d1: &Rat) {
+        let (lo, hi) = match &mut b {
+            Break::Contact(c, _) => (&mut c.lo, &mut c.hi),
+            Break::Gap(lo, hi, _) => (lo, hi),
+        };
+        if &*hi < d0 || &*lo > d1 {
+            return;
+        }
+        let clipped = &*lo < d0 || &*hi > d1;
+        if &*lo < d0 {
+            *lo = d0.clone();
+        }
+        if &*hi > d1 {
+            *hi = d1.clone();
+        }
+        if let (Break::Contact(c, _), true) = (&mut b, clipped) {
+            c.certified = false;
+        }
+        match (self.breaks.last_mut(), b) {
+            (Some(Break::Gap(_, hi, _)), Break::Gap(lo2, hi2, _)) if lo2 <= *hi => {
+                if hi2 > *hi {
+                    *hi = hi2;
+                }
+            }
+            (_, b) => self.breaks.push(b),
+        }
+    }
+}
+
+/// A rational strictly inside `(lo, hi)` with a small denominator (the
+/// simplest one in the middle half): the sample of a piece.
+pub fn sample_between(lo: &Rat, hi: &Rat) -> Rat {
+    let quarter = (hi - lo).mul_pow2(-2);
+    Rat::simplest_in(&(lo + &quarter), &(hi - &quarter))
+}
+
+/// The state of the piece `(start, end)` between breaks, read at a sample
+/// inside (Theorem 5.1: no candidate root lies in it).
+fn piece<O: Oracle>(o: &O, start: Instant, end: Instant) -> Result<Segment, CcdError> {
+    let x = sample_between(&start.hi, &end.lo);
+    let mut d = state_at(o, &x);
+    if d.state == State::Touch {
+        d = o.touch_between_contacts(&x, d)?;
+    }
+    Ok(Segment {
+        state: d.state,
+        start,
+        end,
+        certified: d.certified,
+    })
+}
+
+/// Appends `item`, merging two long segments of one state that meet.
+fn push(out: &mut Vec<Item>, item: Item) {
+    if let (Some(Item::Segment(prev)), Item::Segment(next)) = (out.last_mut(), &item) {
+        let long = |s: &Segment| s.start != s.end;
+        if long(prev) && long(next) && prev.state == next.state && prev.end == next.start {
+            prev.end = next.end.clone();
+            prev.certified &= next.certified;
+            return;
+        }
+    }
+    out.push(item);
+}
+
+/// The outcome of a run: the items in the oracle's parameter, settled by
+/// the oracle, then the verdicts, mapped to time.
+pub(crate) fn assemble<O: Oracle>(
+    o: &O,
+    opts: &Options,
+    state0: Decided,
+    throughout: Option<Decided>,
+    stop_early: bool,
+    walk: Walk<O::Root>,
+) -> Result<Outcome, CcdError> {
+    let [d0, d1] = o.domain();
+    let mut items: Vec<Item> = Vec::new();
+    let mut roots: Vec<(Instant, Option<O::Root>)> = Vec::new();
+    let breaks = walk.breaks;
+    let found_any = !breaks.is_empty();
+    if let Some(d) = throughout {
+        items.push(Item::Segment(Segment {
+            state: d.state,
+            start: Instant::exact(d0.clone()),
+            end: Instant::exact(d1.clone()),
+            certified: d.certified,
+        }));
+    } else if stop_early {
+        let start = Instant {
+            lo: d0.clone(),
+            hi: d0.clone(),
+            certified: state0.certified,
+        };
+        items.push(Item::Segment(Segment {
+            state: state0.state,
+            start: start.clone(),
+            end: start,
+            certified: state0.certified,
+        }));
+    } else {
+        // Breakpoints t0, the breaks, t1 (a break reaching an end replaces
+        // it); a first-contact query stops at its first break.
+        let mut prev =
+            (breaks.first().is_none_or(|b| b.lo() > d0)).then(|| Instant::exact(d0.clone()));
+        for br in breaks {
+            let entry = match &br {
+                Break::Contact(c, _) => c.clone(),
+                Break::Gap(lo, _, _) => Instant::exact(lo.clone()),
+            };
+            if let Some(p) = prev.take() {
+                if p.hi < entry.lo {
+                    items.push(Item::Segment(piece(o, p, entry.clone())?));
+                }
+            }
+            match br {
+                Break::Contact(c, root) => {
+                    items.push(Item::Segment(Segment {
+                        state: State::Touch,
+                        start: c.clone(),
+                        end: c.clone(),
+                        certified: c.certified,
+                    }));
+                    roots.push((c.clone(), root));
+                    prev = Some(c);
+                }
+                Break::Gap(lo, hi, why) => {
+                    items.push(Item::Gap(Gap {
+                        lo,
+                        hi: hi.clone(),
+                        reason: why.to_string(),
+                        witness: None,
+                    }));
+                    prev = Some(Instant::exact(hi));
+                }
+            }
+        }
+        let reached_end = !opts.first_contact_only || !found_any;
+        if let (Some(p), true) = (prev, reached_end) {
+            if &p.hi < d1 {
+                items.push(Item::Segment(piece(o, p, Instant::exact(d1.clone()))?));
+            }
+        }
+    }
+    let mut merged = Vec::new();
+    for item in o.settle(items) {
+        push(&mut merged, item);
+    }
+    let geometry: Vec<Geometry> = if opts.contact_geometry {
+        roots
+            .into_iter()
+            .map(|(c, root)| match root {
+                Some(mut r) => o.geometry(&mut r, walk.zeros, &c),
+                None => Geometry::Unknown {
+                    reason: "the contact's roots were not separated".into(),
+                },
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut outcome = verdicts(o, merged, stop_early, opts.first_contact_only && found_any);
+    outcome.geometry = geometry;
+    Ok(outcome)
+}
+
+/// The first contact, the contacts, completeness and the collision verdict
+/// of a settled timeline, mapped to time; on the float path every instant
+/// and segment is marked uncertified, and `collision_free` is the float
+/// answer.
+fn verdicts<O: Oracle>(o: &O, items: Vec<Item>, stop_early: bool, stopped: bool) -> Outcome {
+    let [d0, d1] = o.domain();
+    let certifies = O::PATH != Path::Float;
+    let map = |i: &Instant| Instant {
+        lo: o.time(&i.lo),
+        hi: o.time(&i.hi),
+        certified: i.certified && certifies,
+    };
+    let mut timeline: Vec<Segment> = Vec::new();
+    let mut gaps: Vec<Gap> = Vec::new();
+    let mut first_contact: Option<Instant> = None;
+    let mut clean = true; // everything so far proven separate
+    for item in items {
+        match item {
+            Item::Segment(s) => {
+                if first_contact.is_none() && s.state != State::Separate {
+                    first_contact = Some(Instant {
+                        certified: clean && s.certified && s.start.certified,
+                        ..s.start.clone()
+                    });
+                }
+                clean &= s.certified;
+                timeline.push(s);
+            }
+            Item::Gap(g) => {
+                if let (None, Some(w)) = (&first_contact, &g.witness) {
+                    first_contact = Some(Instant {
+                        lo: g.lo.clone(),
+                        hi: w.t.clone(),
+                        certified: false,
+                    });
+                }
+                clean = false;
+                gaps.push(g);
+            }
+        }
+    }
+    let contacts: Vec<Instant> = timeline
+        .iter()
+        .filter(|s| {
+            s.start == s.end && s.state == State::Touch && !(stop_early && s.start.lo == *d0)
+        })
+        .map(|s| s.start.clone())
+        .collect();
+    let covered_to_end = timeline.last().is_some_and(|s| s.end.hi == *d1);
+    // Complete exactly when the timeline tiles the span (a first-contact
+    // query that found a contact or gap stops there).
+    let complete = gaps.is_empty() && covered_to_end && !stop_early && !stopped;
+    let all_separate = timeline.iter().all(|s| s.state == State::Separate);
+    let separation =
+        complete && all_separate && (!certifies || timeline.iter().all(|s| s.certified));
+    let collision = !certifies
+        || timeline
+            .iter()
+            .any(|s| s.certified && s.state != State::Separate)
+        || gaps.iter().any(|g| g.witness.is_some());
+    let undecided = (!separation && !collision).then(|| {
+        let mut why: Vec<String> = Vec::new();
+        if !gaps.is_empty() {
+            why.push(format!(
+                "{} piece(s) of the span undecided (see gaps)",
+                gaps.len()
+            ));
+        }
+        if timeline.iter().any(|s| !s.certified) {
+            why.push("the state of a segment or a contact candidate is not proven".into());
+        }
+        if why.is_empty() {
+            why.push("the timeline stops before t1".into());
+        }
+        why.join("; ")
+    });
+    let span = [o.time(d0), o.time(d1)];
+    Outcome {
+        span,
+        collision_free: separation,
+        undecided,
+        first_contact: first_contact.as_ref().map(map),
+        contacts: contacts.iter().map(map).collect(),
+        timeline: timeline
+            .iter()
+            .map(|s| Segment {
+                state: s.state,
+                start: map(&s.start),
+                end: map(&s.end),
+                certified: s.certified && certifies,
+            })
+            .collect(),
+        gaps: gaps
+            .into_iter()
+            .map(|g| Gap {
+                lo: o.time(&g.lo),
+                hi: o.time(&g.hi),
+                witness: g.witness.map(|w| Witness {
+                    t: o.time(&w.t),
+                    state: w.state,
+                }),
+                ..g
+            })
+            .collect(),
+        complete,
+        stats: Stats::default(),
+        geometry: Vec::new(),
+    }
+}

@@ -1,0 +1,146 @@
+//! What Algorithm 1 asks of an arithmetic: the one small trait the exact,
+//! float and interval arithmetics implement.
+
+use crate::decide::Signs;
+use crate::CcdError;
+use ccd_arith::Rat;
+use ccd_subres::Quantity;
+use ccd_timeline::{Geometry, Instant, Path, Segment, State, Stats};
+
+/// Where the signs of a decision are read.
+pub enum At<'r, R> {
+    /// A rational parameter value: a piece's sample, `t0`, or Theorem
+    /// 5.5's non-root `δ`.
+    Sample(&'r Rat),
+    /// A candidate root, over its current enclosure (the arithmetic may
+    /// narrow it to decide a sign).
+    Root(&'r mut R),
+}
+
+/// A state at one instant and whether it is proven.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Decided {
+    /// The state.
+    pub state: State,
+    /// Whether every sign that decided it was proven.
+    pub certified: bool,
+}
+
+/// What an arithmetic knows about `q ≡ 0` on the whole span (the branches
+/// of Algorithm 1: Theorems 5.2, 5.4–5.6).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Vanishing {
+    /// `q ≢ 0`, with a non-root of `q` when the arithmetic has one at hand
+    /// (always for `sr11`: Theorem 5.5 reads the state there).
+    Not(Option<Rat>),
+    /// `q ≡ 0`, proven (or, in float arithmetic, to its tolerance).
+    Identically,
+    /// Neither could be proven (interval arithmetic): the span is left
+    /// undecided.
+    Unknown,
+}
+
+/// One item of a candidate stream, in increasing order.
+pub enum Found<R> {
+    /// An isolated root (one root of the candidate polynomial in it, or a
+    /// float estimate).
+    Root(R),
+    /// Roots not separated from each other (interval arithmetic):
+    /// subdivided again by [`Oracle::split`] or reported as they are.
+    Cluster(R),
+    /// A piece where the roots were not isolated within the effort budget.
+    Gap {
+        /// Start (in the oracle's parameter).
+        lo: Rat,
+        /// End.
+        hi: Rat,
+        /// Why, in words.
+        reason: &'static str,
+    },
+    /// The stream could not prove a sign (a filter that gave up): what it
+    /// found is dropped and the next, costlier attempt starts over.
+    GaveUp,
+    /// A documented effort bound was reached.
+    Failed(CcdError),
+}
+
+/// The candidate instants of one attempt: the roots of `sr0` (or `sr11`).
+pub struct Candidates<'a, R> {
+    /// Degree of the polynomial whose roots they are, when known.
+    pub degree: Option<usize>,
+    /// The roots in increasing order.
+    pub roots: Box<dyn Iterator<Item = Found<R>> + 'a>,
+}
+
+/// One entry of a timeline under construction, in time order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Item {
+    /// A piece (or an instant) of constant state.
+    Segment(Segment),
+    /// A piece left undecided.
+    Gap(ccd_timeline::Gap),
+}
+
+/// The questions Algorithm 1 ([`crate::run`]) asks, answered by one
+/// arithmetic: exact (`ccd-exact-arith`, certified), float (`ccd-float`,
+/// not certified) or interval (`ccd-interval`, certified where its
+/// enclosures decide).
+///
+/// Everything is given in the oracle's parameter on [`Oracle::domain`]
+/// (`u ∈ [0, 1]` for the rational paths, `t` itself for the interval path)
+/// and mapped to time by [`Oracle::time`] at the end.
+pub trait Oracle {
+    /// A candidate instant with its enclosure.
+    type Root;
+    /// Which arithmetic this is (`Path::Float` marks every answer
+    /// uncertified).
+    const PATH: Path;
+    /// Precision levels a decision escalates through while undecided
+    /// ([`Oracle::signs`]); 1 when signs are final.
+    const LEVELS: usize = 1;
+
+    /// The parameter interval `[lo, hi]` of the span.
+    fn domain(&self) -> &[Rat; 2];
+    /// The time of parameter value `x`.
+    fn time(&self, x: &Rat) -> Rat;
+    /// The signs Theorem 3.10 reads at `at`, at precision `level <
+    /// LEVELS`; quantities proven identically zero read as 0.
+    fn signs<'s>(&'s self, at: At<'s, Self::Root>, level: usize) -> Box<dyn Signs + 's>;
+    /// A best guess of the state at `x` when no level decides it (marked
+    /// uncertified).
+    fn guess(&self, x: &Rat) -> State;
+    /// The set-up that only a query going past `t0` needs (the exact path
+    /// forms `f(λ; t)` here).
+    fn prepare(&mut self) -> Result<(), CcdError> {
+        Ok(())
+    }
+    /// Whether `q` (`sr0` or `sr11`) vanishes on the whole span.
+    fn vanishes(&mut self, q: Quantity) -> Vanishing;
+    /// The roots of `q` in the domain; `attempt` counts the attempts that
+    /// gave up ([`Found::GaveUp`]); `None`: no further attempt exists.
+    fn candidates(&self, q: Quantity, attempt: usize) -> Option<Candidates<'_, Self::Root>>;
+    /// The enclosure `[lo, hi]` of a candidate.
+    fn ends(&self, r: &Self::Root) -> (Rat, Rat);
+    /// A cluster subdivided again, within the effort budget (`None`: not
+    /// subdivided).
+    fn split(&self, _cluster: &Self::Root, _q: Quantity) -> Option<Vec<Found<Self::Root>>> {
+        None
+    }
+    /// The root's enclosure narrowed to the query's width, as an instant
+    /// (`certified` when its enclosure is proven to hold one root).
+    fn refine(&self, r: &mut Self::Root, q: Quantity) -> Instant;
+    /// The contact point and normal at the contact `r` (an external touch
+    /// at `instant`, in the parameter), the quantities `zeros` vanishing
+    /// there.
+    fn geometry(&self, r: &mut Self::Root, zeros: &[Quantity], instant: &Instant) -> Geometry;
+    /// The state a sample between contacts gave `Touch`, which Theorem 5.1
+    /// rules out: the arithmetic's answer (an error on the exact path).
+    fn touch_between_contacts(&self, x: &Rat, d: Decided) -> Result<Decided, CcdError>;
+    /// The timeline's gaps filled by what other certificates prove
+    /// (interval arithmetic); the default leaves them.
+    fn settle(&self, items: Vec<Item>) -> Vec<Item> {
+        items
+    }
+    /// The arithmetic's own statistics (degrees, what was formed).
+    fn stats(&self, stats: &mut Stats);
+}

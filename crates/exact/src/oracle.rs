@@ -1,0 +1,337 @@
+//! The exact arithmetic's answers to Algorithm 1: every contact instant
+//! isolated with exact rational bounds and every state decided by exact
+//! signs.
+
+use crate::geometry::Bodies;
+use crate::signs::{model, ClosedForm, Coefficients};
+use ccd_algorithm::{
+    At, Candidates, CcdError, Decided, Found, Oracle, SignSet, Signs, Vanishing, VarSet,
+};
+use ccd_arith::{Int, Rat};
+use ccd_motion::{placed_quadric, CharPoly};
+use ccd_poly::ZPoly;
+use ccd_quadric::characteristic;
+use ccd_scene::Scene;
+use ccd_solver::{RealRoot, RootIter, SignModel};
+use ccd_subres::{closed_forms, sign_variations, Quantity, QuarticInvariants};
+use ccd_timeline::{Geometry, Instant, Path, State, Stats};
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+/// The largest closed form the exact path forms, in bits (degree times
+/// coefficient length, [`exact_bits`]): 2²⁵, a polynomial of 4 MiB, about a
+/// second of this machine's time to form and isolate (docs/termination.md).
+pub const MAX_EXACT_BITS: u64 = 1 << 25;
+
+/// An upper estimate of the size in bits of `sr0`'s closed form: it is
+/// homogeneous of degree 6 in the coefficients `f_k` of `f(λ; u)` (Section
+/// 4), so it has degree `≤ 6·deg f` in `u` and coefficients of at most
+/// about `6·τ` bits for `f_k` of `τ` bits (plus the binomial growth of the
+/// products, a few bits per factor).
+pub fn exact_bits(f: &CharPoly) -> u64 {
+    let tau = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+    let n = f.degree() as u64;
+    (6 * n + 1) * (6 * tau + 8 * n.max(1))
+}
+
+/// The symbolic stage of a rational scene: the normalised `f(λ; u)` and its
+/// five `sr` polynomials in `u = (t − t0)/(t1 − t0)`.
+///
+/// # Errors
+///
+/// [`CcdError::Motion`] when a motion degenerates on the span.
+pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), CcdError> {
+    let a = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
+    let b = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+    let f = CharPoly::from_placed(&a, &b);
+    let inv = closed_forms(&f.coeffs);
+    Ok((f, inv))
+}
+
+/// A candidate of the exact path: a real root of `sr0` (or `sr11`) with
+/// exact rational bounds — from the filter (its model is `sr0`'s closed
+/// form over `f`'s coefficients) or from the exact isolation of the formed
+/// polynomial.
+pub enum ExactRoot {
+    /// A root the filter isolated.
+    Filtered(RealRoot<ClosedForm>),
+    /// A root of the formed polynomial's squarefree part.
+    Isolated(RealRoot),
+}
+
+/// `$body` with `$r` bound to the root inside either variant.
+macro_rules! each {
+    ($root:expr, $r:ident => $body:expr) => {
+        match $root {
+            ExactRoot::Filtered($r) => $body,
+            ExactRoot::Isolated($r) => $body,
+        }
+    };
+}
+
+impl ExactRoot {
+    fn ends(&self) -> (Rat, Rat) {
+        each!(self, r => (r.lo().clone(), r.hi().clone()))
+    }
+}
+
+/// The exact arithmetic over a rational scene, in `u ∈ [0, 1]`.
+pub struct Exact<'s> {
+    scene: &'s Scene,
+    bodies: Bodies<'s>,
+    unit: [Rat; 2],
+    /// `10^−digits`, the width of a reported enclosure in `u`.
+    width: Rat,
+    /// `f(λ; u)` and its sign models, once [`Oracle::prepare`] ran.
+    f: Option<Rc<Coefficients>>,
+    /// `sr0` (or `sr11`) was formed as a polynomial.
+    formed: Cell<bool>,
+    /// `sr0(1/2) ≠ 0` by the `f64` filter: its roots may come from the
+    /// filter alone.
+    filtered: bool,
+    /// The last sample's closed forms and coefficient signs.
+    sample: RefCell<Option<(Rat, QuarticInvariants<Int>, [i32; 5])>>,
+}
+
+impl<'s> Exact<'s> {
+    /// The placements of both bodies (validated exactly on the span).
+    ///
+    /// # Errors
+    ///
+    /// [`CcdError::Motion`] when a motion degenerates on the span.
+    pub fn new(scene: &'s Scene, digits: u32) -> Result<Exact<'s>, CcdError> {
+        let a = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
+        let b = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+        Ok(Exact {
+            scene,
+            bodies: Bodies::new(scene, a, b, digits),
+            unit: [Rat::zero(), Rat::one()],
+            width: Rat::new(Int::one(), Int::pow10(digits)).expect("nonzero denominator"),
+            f: None,
+            formed: Cell::new(false),
+            filtered: false,
+            sample: RefCell::new(None),
+        })
+    }
+
+    fn coefficients(&self) -> &Rc<Coefficients> {
+        self.f
+            .as_ref()
+            .expect("f(λ; u) is set up before roots are asked for")
+    }
+
+    /// The coefficients of `f(λ; u)` at `u` (times a positive factor):
+    /// straight from the placements before `f(λ; u)` is set up (the state
+    /// at `t0` of a first-contact query), from `f` after.
+    fn values_at(&self, u: &Rat) -> [Int; 5] {
+        match &self.f {
+            Some(f) => f.char_poly().at_scaled(u),
+            None => characteristic(&self.bodies.a.quadric_at(u), &self.bodies.b.quadric_at(u)),
+        }
+    }
+}
+
+/// Exact signs at a rational sample (closed forms of the coefficients
+/// there, computed once per sample).
+struct SampleSigns<'a, 's>(&'a Exact<'s>, Rat);
+
+impl SampleSigns<'_, '_> {
+    fn with<T>(&self, read: impl FnOnce(&QuarticInvariants<Int>, &[i32; 5]) -> T) -> T {
+        let mut cache = self.0.sample.borrow_mut();
+        if cache.as_ref().is_none_or(|(at, _, _)| *at != self.1) {
+            let v = self.0.values_at(&self.1);
+            let signs = v.each_ref().map(Int::signum);
+            *cache = Some((self.1.clone(), closed_forms(&v), signs));
+        }
+        let (_, inv, signs) = cache.as_ref().expect("just filled");
+        read(inv, signs)
+    }
+}
+
+impl Signs for SampleSigns<'_, '_> {
+    fn sign(&mut self, q: Quantity) -> SignSet {
+        SignSet::exactly(self.with(|inv, _| inv.get(q).map_or(0, Int::signum)))
+    }
+    fn variations(&mut self) -> VarSet {
+        VarSet::exactly(self.with(|_, s| sign_variations(s)))
+    }
+}
+
+/// Exact signs at an algebraic root ([`RealRoot::sign_with`]).
+struct RootSigns<'a>(&'a mut ExactRoot, &'a Rc<Coefficients>);
+
+impl Signs for RootSigns<'_> {
+    fn sign(&mut self, q: Quantity) -> SignSet {
+        let m = model(self.1, q);
+        SignSet::exactly(each!(&mut *self.0, r => r.sign_with(&m)))
+    }
+    /// Never asked: the touch test stops before `Var`.
+    fn variations(&mut self) -> VarSet {
+        VarSet::default()
+    }
+}
+
+/// The first of 1/2, 1/4, 3/4, 1/8, 3/8, … that is not a root of `p ≠ 0`.
+fn non_root_dyadic(p: &ZPoly) -> Rat {
+    (1u64..)
+        .flat_map(|k| {
+            (1..(1u64 << k.min(62)))
+                .step_by(2)
+                .map(move |m| Rat::dyadic(Int::from_u64(m), k))
+        })
+        .find(|d| p.sign_at(d) != 0)
+        .expect("a nonzero polynomial has finitely many roots")
+}
+
+/// Roots of an exact isolation, ending in the effort bound's error or the
+/// filter's giving up.
+fn stream<M: ccd_solver::SignModel + Clone>(
+    mut roots: RootIter<M>,
+    wrap: fn(RealRoot<M>) -> ExactRoot,
+) -> impl Iterator<Item = Found<ExactRoot>> {
+    let mut done = false;
+    std::iter::from_fn(move || {
+        if done {
+            return None;
+        }
+        if let Some(r) = roots.next() {
+            return Some(Found::Root(wrap(r)));
+        }
+        done = true;
+        if roots.exhausted() {
+            Some(Found::Failed(CcdError::Effort {
+                limit: "exact work",
+                unit: "word operations of exact root isolation",
+                bound: ccd_solver::MAX_EXACT_WORK,
+                reached: roots.work(),
+            }))
+        } else if roots.undecided() {
+            Some(Found::GaveUp)
+        } else {
+            None
+        }
+    })
+}
+
+impl Oracle for Exact<'_> {
+    type Root = ExactRoot;
+    const PATH: Path = Path::Exact;
+
+    fn domain(&self) -> &[Rat; 2] {
+        &self.unit
+    }
+
+    /// `t0 + u·(t1 − t0)`.
+    fn time(&self, u: &Rat) -> Rat {
+        let [t0, t1] = &self.scene.span;
+        t0 + &(u * &(t1 - t0))
+    }
+
+    fn signs<'a>(&'a self, at: At<'a, ExactRoot>, _level: usize) -> Box<dyn Signs + 'a> {
+        match at {
+            At::Sample(u) => Box::new(SampleSigns(self, u.clone())),
+            At::Root(r) => Box::new(RootSigns(r, self.coefficients())),
+        }
+    }
+
+    fn guess(&self, _u: &Rat) -> State {
+        unreachable!("exact signs decide every sample")
+    }
+
+    /// Forms `f(λ; u)`, refusing a closed form above [`MAX_EXACT_BITS`].
+    fn prepare(&mut self) -> Result<(), CcdError> {
+        let f = CharPoly::from_placed(&self.bodies.a, &self.bodies.b);
+        let size = exact_bits(&f);
+        if size > MAX_EXACT_BITS {
+            return Err(CcdError::Effort {
+                limit: "exact size",
+                unit: "bits in the closed form of sr0",
+                bound: MAX_EXACT_BITS,
+                reached: size,
+            });
+        }
+        let f = Rc::new(Coefficients::new(f));
+        *self.sample.borrow_mut() = None;
+        // sr0's roots from its certified f64 Bernstein coefficients when
+        // the filter proves sr0(1/2) ≠ 0 (crate::signs); otherwise sr0 is
+        // formed.
+        self.filtered = model(&f, Quantity::Sr0).filtered_sign_at(&Rat::from_frac(1, 2)) != 0;
+        self.f = Some(f);
+        Ok(())
+    }
+
+    fn vanishes(&mut self, q: Quantity) -> Vanishing {
+        if q == Quantity::Sr0 && self.filtered {
+            return Vanishing::Not(None);
+        }
+        self.formed.set(true);
+        let p = self.coefficients().polynomial(q);
+        if p.is_zero() {
+            Vanishing::Identically
+        } else if q == Quantity::Sr11 {
+            Vanishing::Not(Some(non_root_dyadic(p)))
+        } else {
+            Vanishing::Not(None)
+        }
+    }
+
+    /// The filter's roots first (attempt 0, when it applies), then the
+    /// exact isolation of the formed polynomial.
+    fn candidates(&self, q: Quantity, attempt: usize) -> Option<Candidates<'_, ExactRoot>> {
+        let f = self.coefficients();
+        let (zero, one) = (Rat::zero(), Rat::one());
+        if q == Quantity::Sr0 && self.filtered && attempt == 0 {
+            let bernstein = ccd_float::certified_bernstein(f.char_poly(), Quantity::Sr0);
+            let roots = RootIter::filtered(model(f, q), &zero, &one, &bernstein);
+            return Some(Candidates {
+                degree: f.sr0_degree(),
+                roots: Box::new(stream(roots, ExactRoot::Filtered)),
+            });
+        }
+        if attempt > usize::from(q == Quantity::Sr0 && self.filtered) {
+            return None;
+        }
+        self.formed.set(true);
+        let poly = f.polynomial(q);
+        let roots = ccd_solver::isolate(poly, &zero, &one).ok()?;
+        Some(Candidates {
+            degree: poly.degree(),
+            roots: Box::new(stream(roots, ExactRoot::Isolated)),
+        })
+    }
+
+    fn ends(&self, r: &ExactRoot) -> (Rat, Rat) {
+        r.ends()
+    }
+
+    fn refine(&self, r: &mut ExactRoot, _q: Quantity) -> Instant {
+        each!(&mut *r, x => x.refine_to(&self.width));
+        let (lo, hi) = r.ends();
+        Instant {
+            lo,
+            hi,
+            certified: true,
+        }
+    }
+
+    fn geometry(&self, r: &mut ExactRoot, zeros: &[Quantity], _instant: &Instant) -> Geometry {
+        each!(r, x => self.bodies.exact(x, self.coefficients(), zeros))
+    }
+
+    fn touch_between_contacts(&self, u: &Rat, _d: Decided) -> Result<Decided, CcdError> {
+        Err(CcdError::Internal(format!(
+            "touch at sample u = {u} between contacts"
+        )))
+    }
+
+    fn stats(&self, stats: &mut Stats) {
+        let Some(f) = &self.f else { return };
+        stats.deg_f = f.char_poly().degree();
+        stats.sr0_formed = self.formed.get();
+        stats.deg_sr0 = if self.formed.get() {
+            f.polynomial(Quantity::Sr0).degree()
+        } else {
+            f.sr0_degree()
+        };
+    }
+}
