@@ -148,17 +148,30 @@ pub(crate) fn assemble<O: Oracle>(
             certified: state0.certified,
         }));
     } else {
-        // Breakpoints t0, the breaks, t1 (a break reaching an end replaces
-        // it); a first-contact query stops at its first break.
+        // Breakpoints t0, the breaks, t1: a gap starting at t0 or a contact
+        // exactly at t0 replaces t0; a first-contact query stops at its
+        // first break. Between two breakpoints a piece is read at a sample
+        // (at their common end when they meet, as two contact enclosures
+        // may: an end of a contact's enclosure that is not a single point
+        // is not its root), except next to a gap, whose ends are not
+        // proven non-roots.
+        let replaces_t0 = |b: &Break<O::Root>| match b {
+            Break::Gap(lo, _, _) => lo == d0,
+            Break::Contact(c, _) => c.lo == *d0 && c.hi == *d0,
+        };
         let mut prev =
-            (breaks.first().is_none_or(|b| b.lo() > d0)).then(|| Instant::exact(d0.clone()));
+            (!breaks.first().is_some_and(replaces_t0)).then(|| (Instant::exact(d0.clone()), false));
+        let between = |p: &Instant, p_gap: bool, next: &Instant, next_gap: bool| {
+            p.hi < next.lo
+                || (p.hi == next.lo && !p_gap && !next_gap && !(p.lo == p.hi && next.lo == next.hi))
+        };
         for br in breaks {
-            let entry = match &br {
-                Break::Contact(c, _) => c.clone(),
-                Break::Gap(lo, _, _) => Instant::exact(lo.clone()),
+            let (entry, gap) = match &br {
+                Break::Contact(c, _) => (c.clone(), false),
+                Break::Gap(lo, _, _) => (Instant::exact(lo.clone()), true),
             };
-            if let Some(p) = prev.take() {
-                if p.hi < entry.lo {
+            if let Some((p, p_gap)) = prev.take() {
+                if between(&p, p_gap, &entry, gap) {
                     items.push(Item::Segment(piece(o, p, entry.clone())?));
                 }
             }
@@ -171,7 +184,7 @@ pub(crate) fn assemble<O: Oracle>(
                         certified: c.certified,
                     }));
                     roots.push((c.clone(), root));
-                    prev = Some(c);
+                    prev = Some((c, false));
                 }
                 Break::Gap(lo, hi, why) => {
                     items.push(Item::Gap(Gap {
@@ -180,14 +193,15 @@ pub(crate) fn assemble<O: Oracle>(
                         reason: why.to_string(),
                         witness: None,
                     }));
-                    prev = Some(Instant::exact(hi));
+                    prev = Some((Instant::exact(hi), true));
                 }
             }
         }
         let reached_end = !opts.first_contact_only || !found_any;
-        if let (Some(p), true) = (prev, reached_end) {
-            if &p.hi < d1 {
-                items.push(Item::Segment(piece(o, p, Instant::exact(d1.clone()))?));
+        if let (Some((p, p_gap)), true) = (prev, reached_end) {
+            let end = Instant::exact(d1.clone());
+            if between(&p, p_gap, &end, false) {
+                items.push(Item::Segment(piece(o, p, end)?));
             }
         }
     }

@@ -8,6 +8,7 @@
 
 #![warn(missing_docs)]
 
+mod approx;
 #[cfg(feature = "gmp")]
 mod backend_gmp;
 #[cfg(not(feature = "gmp"))]
@@ -19,6 +20,7 @@ mod interval;
 mod rat;
 mod ring;
 
+pub use approx::Approx;
 pub use convert::NotFinite;
 pub use dual::Dual;
 pub use int::Int;

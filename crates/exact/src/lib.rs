@@ -7,7 +7,7 @@
 //! * set-up: `f(λ; u)` from the placements (`ccd-motion`), refused above
 //!   [`MAX_EXACT_BITS`];
 //! * `sr0`'s roots from its certified `f64` Bernstein coefficients
-//!   (`ccd_float::certified_bernstein`, proven error bounds) where that
+//!   ([`certified_bernstein`], proven error bounds) where that
 //!   filter decides, otherwise from the exact isolation of the formed `sr0`
 //!   (or `sr11` when `sr0 ≡ 0`);
 //! * the signs of `sr22, sr20, sr11, sr10` at a root from `f`'s
@@ -17,9 +17,11 @@
 
 #![warn(missing_docs)]
 
+mod filter;
 mod geometry;
 mod oracle;
 mod signs;
 
+pub use filter::certified_bernstein;
 pub use oracle::{exact_bits, symbolic, Exact, ExactRoot, MAX_EXACT_BITS};
 pub use signs::ClosedForm;

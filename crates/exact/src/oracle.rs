@@ -281,7 +281,7 @@ impl Oracle for Exact<'_> {
         let f = self.coefficients();
         let (zero, one) = (Rat::zero(), Rat::one());
         if q == Quantity::Sr0 && self.filtered && attempt == 0 {
-            let bernstein = ccd_float::certified_bernstein(f.char_poly(), Quantity::Sr0);
+            let bernstein = crate::filter::certified_bernstein(f.char_poly(), Quantity::Sr0);
             let roots = RootIter::filtered(model(f, q), &zero, &one, &bernstein);
             return Some(Candidates {
                 degree: f.sr0_degree(),

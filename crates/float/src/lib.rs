@@ -51,16 +51,14 @@
 
 #![warn(missing_docs)]
 
-mod approx;
-mod bernstein;
 mod oracle;
 mod roots;
 mod setup;
 
-pub use approx::Approx;
-pub use bernstein::BernsteinF64;
+pub use ccd_arith::Approx;
 pub use ccd_motion::CharPoly;
+pub use ccd_poly::BernsteinF64;
 pub use ccd_timeline::{Instant, Outcome, Segment, State, Stats};
 pub use oracle::{solve, solve_prepared, Float, TOL_IDENTICALLY_ZERO, TOL_ROOT_NOISE, TOL_SIGN};
 pub use roots::{Candidate, RootKind, Roots, CLUSTER_WIDTH, ROOT_WIDTH};
-pub use setup::{certified_bernstein, prepare, Prepared};
+pub use setup::{prepare, Prepared};

@@ -1,7 +1,6 @@
 //! The float arithmetic's answers to Algorithm 1 (`ccd-algorithm`): every
 //! sign read from `f64` values of the closed forms, with tolerances.
 
-use crate::bernstein::BernsteinF64;
 use crate::roots::{Candidate, Roots};
 use crate::setup::{prepare, Prepared};
 use ccd_algorithm::{
@@ -10,6 +9,7 @@ use ccd_algorithm::{
 };
 use ccd_arith::Rat;
 use ccd_motion::{Body, CharPoly};
+use ccd_poly::BernsteinF64;
 use ccd_subres::{closed_forms, sign_variations, Quantity, QuarticInvariants};
 use ccd_timeline::{Geometry, Instant, Outcome, Path, State, Stats};
 
@@ -38,8 +38,8 @@ pub const TOL_SIGN: f64 = 1e-10;
 /// `f64` signs at `u`: the closed forms of `f`'s coefficients there, each
 /// zero within `tol` of its magnitude; `identically` read as 0.
 struct FloatSigns<'a> {
-    inv: QuarticInvariants<crate::Approx>,
-    f: [crate::Approx; 5],
+    inv: QuarticInvariants<ccd_arith::Approx>,
+    f: [ccd_arith::Approx; 5],
     tol: f64,
     identically: &'a [Quantity],
 }

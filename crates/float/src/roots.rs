@@ -48,7 +48,8 @@
 //! in one stack buffer reused for the whole walk (no allocation per node
 //! once the walk is as deep as it gets).
 
-use crate::bernstein::{binomial_row, eval_scaled, BernsteinF64};
+use ccd_poly::bernstein_f64::{binomial_row, eval_scaled};
+use ccd_poly::BernsteinF64;
 
 /// Width in `u` below which a node with `V >= 2` is reported as one
 /// cluster candidate: `2^-40 ≈ 9.1e-13`.

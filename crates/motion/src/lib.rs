@@ -10,6 +10,7 @@ mod curve;
 mod error;
 pub mod kinds;
 pub mod matrices;
+mod rounded;
 
 pub use characteristic::{char_poly, normalise, normalise_with, CharPoly};
 pub use error::MotionError;

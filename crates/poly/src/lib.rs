@@ -17,6 +17,7 @@
 #![warn(missing_docs)]
 
 mod bernstein;
+pub mod bernstein_f64;
 mod kronecker;
 pub mod modular;
 pub mod mul;
@@ -27,6 +28,7 @@ mod small;
 mod zpoly;
 
 pub use bernstein::{binomials, Bernstein};
+pub use bernstein_f64::BernsteinF64;
 pub use qpoly::QPoly;
 pub use small::SmallPoly;
 pub use zpoly::ZPoly;

@@ -2,7 +2,7 @@
 //! terms that produced it, so that "is this zero?" can be asked relative to
 //! the rounding noise of the computation rather than to an absolute scale.
 
-use ccd_arith::RingOps;
+use crate::RingOps;
 
 /// An `f64` value with a running magnitude: `magnitude` is what the same
 /// computation gives on the absolute values of its inputs with every `−`
@@ -12,7 +12,7 @@ use ccd_arith::RingOps;
 ///
 /// ```
 /// use ccd_arith::RingOps;
-/// use ccd_float::Approx;
+/// use ccd_arith::Approx;
 /// let x = Approx::from_f64(1e4);
 /// let y = x.times(&x).minus(&x.times(&x).plus(&Approx::from_f64(1e-3)));
 /// // y ≈ −1e-3 against terms of size 1e8: a sign at relative tolerance 1e-14 …

@@ -1,7 +1,7 @@
 //! [`BernsteinF64`]: `f64` polynomials on `[0, 1]` in (scaled) Bernstein
 //! form, with a magnitude bound per coefficient, implementing
 //! [`RingOps`] so that the Section 4 closed forms
-//! ([`ccd_subres::closed_forms`]) run on them unchanged.
+//! (`ccd_subres::closed_forms`) run on them unchanged.
 //!
 //! The paper's float implementation (Section 5.3) keeps "polynomials …
 //! in the Bernstein form in order to improve the robustness and accuracy of
@@ -52,7 +52,7 @@
 //! `f64` holds that up to `n ≈ 1000`, far above the degree 288 of `sr0` for
 //! degree-4 affine motions (Table 3).
 
-use crate::approx::Approx;
+use ccd_arith::Approx;
 use ccd_arith::{Interval, RingOps};
 
 /// An `f64` polynomial on `[0, 1]` in scaled Bernstein form, with
@@ -60,7 +60,7 @@ use ccd_arith::{Interval, RingOps};
 ///
 /// ```
 /// use ccd_arith::RingOps;
-/// use ccd_float::BernsteinF64;
+/// use ccd_poly::BernsteinF64;
 /// // (1 − 2u)² = 1 − 4u + 4u²: ordinary Bernstein coefficients [1, −1, 1].
 /// let p = BernsteinF64::from_power(&[1.0, -2.0]);
 /// let sq = p.times(&p);
@@ -108,7 +108,7 @@ fn product_tiny(len: usize, ma: f64, ta: f64, mb: f64, tb: f64) -> f64 {
 /// `C(n, 0..=n)` in `f64` (exact while the intermediate products stay below
 /// `2^53`, e.g. for `n <= 50`; beyond, each entry carries at most `2n`
 /// roundings).
-pub(crate) fn binomial_row(n: usize) -> Vec<f64> {
+pub fn binomial_row(n: usize) -> Vec<f64> {
     let mut row = Vec::with_capacity(n + 1);
     let mut c = 1.0f64;
     row.push(c);
@@ -136,7 +136,7 @@ fn convolve(a: &[f64], b: &[f64]) -> Vec<f64> {
 /// `Σ_i c_i x^i (1 − x)^(n − i)` for scaled coefficients `c` (degree
 /// `n = c.len() − 1`) at `x ∈ [0, 1]`: Horner in `x/(1 − x)` or `(1 − x)/x`,
 /// whichever is at most 1, so `O(n)` and without overflow.
-pub(crate) fn eval_scaled(c: &[f64], x: f64) -> f64 {
+pub fn eval_scaled(c: &[f64], x: f64) -> f64 {
     let n = c.len() - 1;
     if x <= 0.5 {
         let (s, w) = (x / (1.0 - x), 1.0 - x);
