@@ -1,8 +1,8 @@
 //! Timings of the exact path: one static classification, and full CCD and
 //! first-contact queries on the shipped rational scenes.
 //!
-//! `cargo bench --bench ccd` (default build) and
-//! `cargo bench --bench ccd --features gmp`.
+//! `cargo bench -p ccd-benches --bench ccd` (default build) and
+//! `cargo bench -p ccd-benches --bench ccd --features gmp`.
 
 use ccd_arith::Rat;
 use ccd_exact::{run, Options, Scene};
@@ -12,7 +12,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn scene(name: &str) -> Scene {
-    let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/../{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     Scene::from_toml(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
 }

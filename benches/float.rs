@@ -12,7 +12,7 @@
 //! full timelines and first-contact queries. Criterion prints means; the
 //! medians are in `target/criterion/<group>/<bench>/new/estimates.json`.
 //!
-//! `cargo bench --bench float` (about a minute).
+//! `cargo bench -p ccd-benches --bench float` (about a minute).
 
 use ccd_exact::Options;
 use ccd_float::{prepare, solve, solve_prepared};
@@ -22,7 +22,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn file(name: &str) -> String {
-    let path = format!("{}/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/../{name}", env!("CARGO_MANIFEST_DIR"));
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 

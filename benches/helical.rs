@@ -4,8 +4,8 @@
 //! Bézier matching the end orientations, linear centre) through the exact
 //! path (`ccd_exact::run`).
 //!
-//! `cargo bench --bench helical` (default build) and
-//! `cargo bench --bench helical --features gmp`.
+//! `cargo bench -p ccd-benches --bench helical` (default build) and
+//! `cargo bench -p ccd-benches --bench helical --features gmp`.
 
 use ccd_exact::{Options, Scene};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -13,7 +13,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn scene(name: &str) -> Scene {
-    let path = format!("{}/tests/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/../tests/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     Scene::from_toml(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
 }

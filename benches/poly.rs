@@ -2,8 +2,8 @@
 //! collision pipeline produces: degree-216 polynomials with 2000-bit
 //! coefficients. Inputs are pseudo-random from a fixed xorshift seed.
 //!
-//! Run with `cargo bench --bench poly` (num-bigint kernel) and
-//! `cargo bench --bench poly --features gmp`.
+//! Run with `cargo bench -p ccd-benches --bench poly` (num-bigint kernel) and
+//! `cargo bench -p ccd-benches --bench poly --features gmp`.
 
 use ccd_arith::Int;
 use ccd_poly::mul::{mul_kronecker, mul_multimodular};

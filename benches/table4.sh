@@ -6,9 +6,9 @@
 #   bash benches/table4.sh > /tmp/table4.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo bench -q --bench ccd >&2
-cargo bench -q --bench float >&2
-CARGO_TARGET_DIR=target/gmp cargo bench -q --bench ccd --features gmp >&2
+cargo bench -q -p ccd-benches --bench ccd >&2
+cargo bench -q -p ccd-benches --bench float >&2
+CARGO_TARGET_DIR=target/gmp cargo bench -q -p ccd-benches --bench ccd --features gmp >&2
 python3 - <<'PY'
 import json, glob, os
 
