@@ -6,12 +6,13 @@ use crate::geometry::Bodies;
 use crate::signs::Coefficients;
 use crate::CcdError;
 use ccd_arith::{Int, Rat};
+use ccd_classify::{classify_with, Configuration};
 use ccd_motion::{placed_quadric, CharPoly, PlacedQuadric};
 use ccd_poly::ZPoly;
 use ccd_quadric::{characteristic, classify_quartic};
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, RootIter, SignModel};
-use ccd_subres::{classify_with, closed_forms, Configuration, Quantity, QuarticInvariants};
+use ccd_subres::{closed_forms, Quantity, QuarticInvariants};
 use ccd_timeline::{Findings, Geometry, Instant, Outcome, State, Stats};
 
 /// How the roots and signs are computed.

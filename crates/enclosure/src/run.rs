@@ -12,9 +12,10 @@ use crate::real::Real;
 use crate::signs::{Possible, Readings};
 use crate::trig::Trig;
 use ccd_arith::{Int, Interval, Rat, RingOps};
+use ccd_classify::{classify, Configuration, SignData};
 use ccd_motion::{Body, Motion, Quat};
 use ccd_quadric::rotation_numerator;
-use ccd_subres::{classify, Configuration, Quantity, SignData};
+use ccd_subres::Quantity;
 use ccd_timeline::{Gap, Instant, Outcome, Segment, State, Stats, Witness};
 use std::cell::Cell;
 

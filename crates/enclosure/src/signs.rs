@@ -1,13 +1,14 @@
 //! Reading Theorem 3.10 off enclosures: each quantity contributes the SET
 //! of signs its enclosure allows, and the configuration is decided when
 //! every combination of allowed signs gives the same answer of
-//! [`ccd_subres::classify`] (one decision tree shared with the exact path).
+//! [`ccd_classify::classify`] (one decision tree shared with the exact path).
 //! When several configurations remain possible, the set says which ones —
 //! e.g. whether an undecided candidate instant is *consistent with* an
 //! external touch.
 
 use crate::real::Real;
-use ccd_subres::{classify, sign_variations, Configuration, Quantity, QuarticInvariants, SignData};
+use ccd_classify::{classify, sign_variations, Configuration, SignData};
+use ccd_subres::{Quantity, QuarticInvariants};
 
 /// A set of possible signs (subset of {−1, 0, 1}).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

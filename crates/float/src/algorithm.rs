@@ -6,8 +6,9 @@ use crate::bernstein::BernsteinF64;
 use crate::roots::Roots;
 use crate::setup::{prepare, Prepared};
 use ccd_arith::Rat;
+use ccd_classify::{classify_with, sign_variations, Configuration};
 use ccd_motion::CharPoly;
-use ccd_subres::{classify_with, closed_forms, sign_variations, Configuration, Quantity};
+use ccd_subres::{closed_forms, Quantity};
 use ccd_timeline::{Findings, Instant, Outcome, State, Stats};
 
 /// What a float query asks for.

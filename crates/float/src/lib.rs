@@ -27,7 +27,7 @@
 //!    (Theorems 5.2, 5.4–5.6), candidate roots on `[0, 1]` in increasing
 //!    order by de Casteljau subdivision and Descartes' rule of signs
 //!    ([`Roots`], module `roots`), the touch test of Theorem 3.10(2) at each
-//!    ([`ccd_subres::classify_with`] on [`Approx`] signs, module `approx`),
+//!    ([`ccd_classify::classify_with`] on [`Approx`] signs, module `approx`),
 //!    the states between contacts (Theorem 5.1), and the [`Outcome`] laid
 //!    out by the exact path's own rules
 //!    ([`ccd_timeline::Findings::into_outcome`]), with `certified: false`, so every instant is marked
