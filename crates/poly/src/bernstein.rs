@@ -15,6 +15,15 @@
 //!
 //! Dividing the `c_i` by the binomials is the only step leaving `Z`; it is
 //! done once per conversion over a common denominator.
+//!
+//! **Which Bernstein form is for what.** This is the exact form, over `Q`:
+//! the certified path's Bernstein coefficients (Descartes' rule of signs,
+//! subdivision, enclosures) are these, and every sign read off them is
+//! exact. The solver's `FilterBernstein` (in `ccd-solver`) is an `f64`
+//! copy of one node's coefficients with proven error bounds, used only to
+//! skip integer work where a float sign is already certain; the float
+//! path's `BernsteinF64` (in `ccd-float`) is the paper's uncertified `f64`
+//! arithmetic. Neither replaces this one where a sign is in doubt.
 
 use crate::mul::mul_coeffs;
 use crate::zpoly::eval::hom_horner;
