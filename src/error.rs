@@ -39,7 +39,7 @@ pub enum CcdError {
     Effort {
         /// Which bound: `exact work` (word operations of root isolation,
         /// [`ccd_solver::MAX_EXACT_WORK`]) or `exact size` (bits of the
-        /// closed forms, [`crate::algorithm::MAX_EXACT_BITS`]).
+        /// closed forms, the exact path's `MAX_EXACT_BITS`).
         limit: &'static str,
         /// The unit of `bound` and `reached`.
         unit: &'static str,

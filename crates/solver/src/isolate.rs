@@ -209,7 +209,7 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     max_work: u64,
 }
 
-/// The default bound on an isolation's exact work ([`exact_work`]), about
+/// The default bound on an isolation's exact work (`exact_work`), about
 /// a second of this machine's time with num-bigint (docs/termination.md).
 pub const MAX_EXACT_WORK: u64 = 4_000_000_000;
 

@@ -23,7 +23,7 @@ enum Jump {
 }
 
 /// A real root `α` of a squarefree `p` (the function of a [`SignModel`]
-/// `M`; by default an explicit polynomial in ℤ[t]): either known exactly
+/// `M`; by default an explicit polynomial in `ℤ[t]`): either known exactly
 /// (`lo = hi = α`, a rational root) or the only root of `p` in the open
 /// interval `(lo, hi)`, where `p(lo)` and `p(hi)` are nonzero with opposite
 /// signs.
@@ -354,7 +354,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     ///    squared width, so this decides any `q(α) ≠ 0` as soon as `I` is
     ///    narrower than about `|q(α)/q'(α)|`. It runs first with the
     ///    linear part in `f64` (cheap), then with it exact
-    ///    ([`RealRoot::exact_taylor_sign`]: no underflow, however small
+    ///    (`RealRoot::exact_taylor_sign`: no underflow, however small
     ///    `q(α)` is beside `q`'s coefficients);
     /// 3. once `q(α) ≠ 0` is proven, at rounds 3, 6, 12, …, Descartes' rule
     ///    on `q`'s exact Bernstein coefficients over `I`.
