@@ -15,7 +15,7 @@
 
 use ccd_arith::{Int, Rat};
 use ccd_exact::{run_toml, Options, Outcome, State};
-use ccd_stability::families::{poly_from_roots, to_bernstein};
+use ccd_stability::families::affine::{poly_from_roots, to_bernstein};
 
 /// `10^(−k)`.
 fn ten_to_minus(k: u32) -> Rat {

@@ -19,15 +19,6 @@ pub(crate) enum Break<R> {
     Gap(Rat, Rat, &'static str),
 }
 
-impl<R> Break<R> {
-    fn lo(&self) -> &Rat {
-        match self {
-            Break::Contact(c, _) => &c.lo,
-            Break::Gap(lo, _, _) => lo,
-        }
-    }
-}
-
 /// The breaks of one walk, in order, and the quantities that vanish at its
 /// contacts.
 pub(crate) struct Walk<R> {
@@ -163,7 +154,7 @@ pub(crate) fn assemble<O: Oracle>(
             (!breaks.first().is_some_and(replaces_t0)).then(|| (Instant::exact(d0.clone()), false));
         let between = |p: &Instant, p_gap: bool, next: &Instant, next_gap: bool| {
             p.hi < next.lo
-                || (p.hi == next.lo && !p_gap && !next_gap && !(p.lo == p.hi && next.lo == next.hi))
+                || (p.hi == next.lo && !p_gap && !next_gap && (p.lo != p.hi || next.lo != next.hi))
         };
         for br in breaks {
             let (entry, gap) = match &br {

@@ -1,12 +1,13 @@
 //! Theorem 3.10 read off any arithmetic: each quantity contributes the SET
 //! of signs the arithmetic allows it at a point (one sign when it is
-//! decided), and the decision tree of [`ccd_subres::classify_with`] is
+//! decided), and the decision tree of [`ccd_classify::classify_with`] is
 //! walked down every branch those sets leave open. The configuration is
 //! decided when every branch ends in the same one; otherwise the
 //! [`Possible`] set says which remain — e.g. whether an undecided candidate
 //! instant is *consistent with* an external touch.
 
-use ccd_subres::{classify_with, Configuration, Quantity};
+use ccd_classify::{classify_with, Configuration};
+use ccd_subres::Quantity;
 
 /// A set of possible signs (a subset of {−1, 0, 1}).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -127,7 +128,8 @@ pub trait Signs {
 ///
 /// ```
 /// use ccd_algorithm::{possible_with, SignSet, Signs, VarSet};
-/// use ccd_subres::{Configuration, Quantity};
+/// use ccd_classify::Configuration;
+/// use ccd_subres::Quantity;
 /// struct Fixed;
 /// impl Signs for Fixed {
 ///     fn sign(&mut self, q: Quantity) -> SignSet {
@@ -194,7 +196,7 @@ pub fn possible_with(signs: &mut dyn Signs, zero: &[Quantity], touch_only: bool)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ccd_subres::{classify, SignData};
+    use ccd_classify::{classify, SignData};
     use proptest::prelude::*;
 
     struct Sets([SignSet; 5], VarSet);

@@ -7,7 +7,8 @@ use crate::decide::possible_with;
 use crate::oracle::{At, Decided, Found, Oracle, Vanishing};
 use crate::{CcdError, Options};
 use ccd_arith::Rat;
-use ccd_subres::{Configuration, Quantity};
+use ccd_classify::Configuration;
+use ccd_subres::Quantity;
 use ccd_timeline::{Branch, Instant, Outcome, State, Stats};
 
 /// A cluster wider than `2^−16` of the span is reported as an undecided gap

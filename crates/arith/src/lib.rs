@@ -25,7 +25,8 @@ pub use convert::NotFinite;
 pub use dual::Dual;
 pub use int::Int;
 pub use interval::Interval;
-pub use rat::{excerpt, ParseRatError, Rat};
+pub use rat::text::{excerpt, ParseRatError};
+pub use rat::Rat;
 pub use ring::{Ring, RingOps};
 
 /// The name of the big-integer kernel in this build: `"num-bigint"` or `"gmp"`.

@@ -10,7 +10,7 @@ use ccd_subres::{closed_form, Quantity};
 /// closed form `q` (not [`Quantity::Var`]) of `f`, times a positive
 /// constant: the closed form over the rescaled `f64` inputs of `CharPoly::bernstein_f64`
 /// (a positive multiple of `q`, the closed forms being homogeneous and
-/// isobaric), with the proven error bounds of [`BernsteinF64::enclosures`].
+/// isobaric), with the proven error bounds of [`ccd_poly::BernsteinF64::enclosures`].
 /// The exact path isolates the roots of `sr0` from these without forming
 /// `sr0`; a coefficient whose sign they leave open sends it back to the
 /// exact polynomial.

@@ -8,12 +8,13 @@ use ccd_algorithm::{
     At, Candidates, CcdError, Decided, Found, Oracle, SignSet, Signs, Vanishing, VarSet,
 };
 use ccd_arith::{Int, Rat};
+use ccd_classify::sign_variations;
 use ccd_motion::{placed_quadric, CharPoly};
 use ccd_poly::ZPoly;
 use ccd_quadric::characteristic;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, RootIter, SignModel};
-use ccd_subres::{closed_forms, sign_variations, Quantity, QuarticInvariants};
+use ccd_subres::{closed_forms, Quantity, QuarticInvariants};
 use ccd_timeline::{Geometry, Instant, Path, State, Stats};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -75,6 +76,9 @@ impl ExactRoot {
     }
 }
 
+/// A sample point with the closed forms and the coefficient signs there.
+type Sample = (Rat, QuarticInvariants<Int>, [i32; 5]);
+
 /// The exact arithmetic over a rational scene, in `u ∈ [0, 1]`.
 pub struct Exact<'s> {
     scene: &'s Scene,
@@ -90,7 +94,7 @@ pub struct Exact<'s> {
     /// filter alone.
     filtered: bool,
     /// The last sample's closed forms and coefficient signs.
-    sample: RefCell<Option<(Rat, QuarticInvariants<Int>, [i32; 5])>>,
+    sample: RefCell<Option<Sample>>,
 }
 
 impl<'s> Exact<'s> {

@@ -8,9 +8,10 @@ use ccd_algorithm::{
     Vanishing, VarSet,
 };
 use ccd_arith::Rat;
+use ccd_classify::sign_variations;
 use ccd_motion::{Body, CharPoly};
 use ccd_poly::BernsteinF64;
-use ccd_subres::{closed_forms, sign_variations, Quantity, QuarticInvariants};
+use ccd_subres::{closed_forms, Quantity, QuarticInvariants};
 use ccd_timeline::{Geometry, Instant, Outcome, Path, State, Stats};
 
 /// Relative tolerance under which an `sr` polynomial counts as identically
@@ -31,7 +32,7 @@ pub const TOL_ROOT_NOISE: f64 = 1e-13;
 /// Relative tolerance under which a value of `sr22, sr20, sr11, sr10, sr0`
 /// or of a coefficient of `f` at one instant counts as zero (Theorem 3.10
 /// reads zero signs, e.g. `sr11 = 0` in case (2b)): `1e-10` of its magnitude
-/// ([`Approx::sign`]), which also absorbs the error of evaluating at a root
+/// ([`ccd_arith::Approx::sign`]), which also absorbs the error of evaluating at a root
 /// known only to its bracket.
 pub const TOL_SIGN: f64 = 1e-10;
 

@@ -14,13 +14,14 @@ use ccd_algorithm::{
     VarSet,
 };
 use ccd_arith::{Int, Interval, Rat};
+use ccd_classify::{classify, SignData};
 use ccd_contact::{enclose, Case, Goal};
 use ccd_enclosure::dyadic::BigInterval;
 use ccd_enclosure::isolate::{isolate, refine, width_rat, Found as Isolated, Limits, Problem};
 use ccd_enclosure::placement::invariants_at;
 use ccd_enclosure::real::Real;
 use ccd_motion::{Body, Motion};
-use ccd_subres::{classify, closed_form, Quantity, SignData};
+use ccd_subres::{closed_form, Quantity};
 use ccd_timeline::{Geometry, Instant, Path, State, Stats};
 use std::cell::Cell;
 
@@ -173,7 +174,7 @@ pub struct Intervals<'s> {
     /// added to every multi-precision evaluation, so that `sin(1e300·t)`
     /// is enclosed tightly at a rational `t`.
     extra_bits: u32,
-    /// Multi-precision cluster boxes left ([`MAX_CLUSTER_BOXES_TOTAL`]).
+    /// Multi-precision cluster boxes left (`MAX_CLUSTER_BOXES_TOTAL`).
     cluster_boxes: Cell<usize>,
 }
 
@@ -456,7 +457,7 @@ impl Oracle for Intervals<'_> {
     }
 
     /// The cluster subdivided again in multi-precision, within the budget
-    /// of all clusters ([`MAX_CLUSTER_BOXES_TOTAL`]).
+    /// of all clusters (`MAX_CLUSTER_BOXES_TOTAL`).
     fn split(&self, r: &IntervalRoot, q: Quantity) -> Option<Vec<Found<IntervalRoot>>> {
         let left = self.cluster_boxes.get();
         if left == 0 {
@@ -487,10 +488,10 @@ impl Oracle for Intervals<'_> {
         let p = self.problem(q);
         let width = self.width();
         let fine = match &r.boxed {
-            Boxed::F64(x) => refine(&p, *x, &width)
-                .lo_rat()
-                .zip(refine(&p, *x, &width).hi_rat())
-                .map(|e| (e, 53)),
+            Boxed::F64(x) => {
+                let f = refine(&p, *x, &width);
+                f.lo_rat().zip(f.hi_rat()).map(|e| (e, f.precision()))
+            }
             Boxed::Big(x) => {
                 let f = refine(&p, x.clone(), &width);
                 let prec = f.precision();
@@ -499,7 +500,7 @@ impl Oracle for Intervals<'_> {
         };
         if let Some(((mut lo, mut hi), prec)) = fine {
             let mut bits = self.refinement_bits().max(prec);
-            while &(&hi - &lo) > &width && bits <= MAX_REFINEMENT_BITS + self.extra_bits {
+            while &hi - &lo > width && bits <= MAX_REFINEMENT_BITS + self.extra_bits {
                 let start =
                     BigInterval::from_rat(&lo, bits).hull(&BigInterval::from_rat(&hi, bits));
                 let big = refine(&p, start, &width);

@@ -4,8 +4,9 @@
 //! arithmetic).
 
 use ccd_algorithm::{SignSet, VarSet};
+use ccd_classify::sign_variations;
 use ccd_enclosure::real::Real;
-use ccd_subres::{sign_variations, Quantity, QuarticInvariants};
+use ccd_subres::{Quantity, QuarticInvariants};
 
 /// The signs the points of an enclosure can have.
 fn signs_of<R: Real>(x: &R) -> SignSet {

@@ -1,5 +1,5 @@
 //! The characteristic polynomial `f(λ; u) = det(λA(u) + B(u))` with
-//! coefficients in ℤ[u], normalised to the lowest degrees the scene allows.
+//! coefficients in `ℤ[u]`, normalised to the lowest degrees the scene allows.
 //!
 //! # Normalisation
 //!
@@ -29,7 +29,7 @@ use ccd_arith::{Int, Rat};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
-/// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in ℤ[u],
+/// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
 /// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CharPoly {

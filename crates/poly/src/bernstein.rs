@@ -15,9 +15,19 @@
 //!
 //! Dividing the `c_i` by the binomials is the only step leaving `Z`; it is
 //! done once per conversion over a common denominator.
+//!
+//! **Which Bernstein form is for what.** This is the exact form, over `Q`:
+//! the certified path's Bernstein coefficients (Descartes' rule of signs,
+//! subdivision, enclosures) are these, and every sign read off them is
+//! exact. The solver's `FilterBernstein` (in `ccd-solver`) is an `f64`
+//! copy of one node's coefficients with proven error bounds, used only to
+//! skip integer work where a float sign is already certain; the float
+//! path's `BernsteinF64` (in `ccd-float`) is the paper's uncertified `f64`
+//! arithmetic. Neither replaces this one where a sign is in doubt.
 
 use crate::mul::mul_coeffs;
-use crate::zpoly::{hom_horner, taylor_shift_in_place};
+use crate::zpoly::eval::hom_horner;
+use crate::zpoly::substitution::taylor_shift_in_place;
 use crate::{QPoly, ZPoly};
 use ccd_arith::{Int, Rat};
 
@@ -196,7 +206,7 @@ impl Bernstein {
             scale = scale.mul_pow2(tz as i64);
         }
         let g = if content {
-            crate::zpoly::content_of(&coeffs)
+            crate::zpoly::division::content_of(&coeffs)
         } else {
             Int::one()
         };
@@ -391,6 +401,43 @@ impl Bernstein {
     }
 }
 
+/// [`ZPoly`]'s binomially scaled Bernstein coefficients on `[0, 1]`, kept
+/// here with the other conversions (so `zpoly` needs nothing of this module).
+impl ZPoly {
+    /// The integers `C(n, i)·bᵢ` for the Bernstein coefficients `bᵢ` of `p`
+    /// over `[0, 1]` in degree `n = deg p` (`[0]` for the zero polynomial):
+    /// reverse, Taylor shift by 1, reverse, at fixed length — additions
+    /// only, no rounding, no gcd.
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// use ccd_poly::ZPoly;
+    /// // 2 + t = 2·B₀ + 3·B₁; t² = B₂ (its zero constant term is kept).
+    /// assert_eq!(ZPoly::from_i64s(&[2, 1]).scaled_bernstein(), [2, 3].map(Int::from));
+    /// assert_eq!(ZPoly::from_i64s(&[0, 0, 1]).scaled_bernstein(), [0, 0, 1].map(Int::from));
+    /// ```
+    pub fn scaled_bernstein(&self) -> Vec<Int> {
+        if self.coeffs().is_empty() {
+            return vec![Int::zero()];
+        }
+        // The shift adds at most n bits (the entries are sums of at most
+        // 2^n coefficients): machine integers when that fits in i128.
+        if self.max_bits() as usize + self.coeffs().len() < 126 {
+            let mut v: Vec<i128> = (self.coeffs().iter().rev())
+                .map(|c| c.to_i128().expect("fits: guarded by max_bits"))
+                .collect();
+            let n = v.len();
+            for i in 0..n {
+                for j in (i..n - 1).rev() {
+                    v[j] += v[j + 1];
+                }
+            }
+            return v.into_iter().rev().map(Int::from_i128).collect();
+        }
+        reverse_shift_reverse(self.coeffs().to_vec(), 1)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -534,6 +581,18 @@ mod tests {
             if b.sign_at_lo() != 0 && b.sign_at_hi() != 0 {
                 prop_assert_eq!(v % 2, inside % 2);
             }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The machine-integer Bernstein conversion agrees with the
+        /// big-integer one, on both sides of the `i128` limit.
+        #[test]
+        fn scaled_bernstein_matches_the_exact_shift(p in zpoly_deg(0, 20, 120)) {
+            let want = if p.is_zero() { vec![Int::zero()] } else { reverse_shift_reverse(p.coeffs().to_vec(), 1) };
+            prop_assert_eq!(p.scaled_bernstein(), want);
         }
     }
 }

@@ -21,6 +21,8 @@
 //!
 //! Termination: all but finitely many primes are lucky, and after enough
 //! lucky primes the reconstruction equals `H`, is stable, and verifies.
+//!
+//! [`ZPoly::gcd`] and [`ZPoly::squarefree_part`] are defined here.
 
 use crate::ntt::{reduce_all, to_limbs};
 use crate::prime::{ntt_prime, Fp};
@@ -194,6 +196,30 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
         }
     }
     unreachable!("the prime loop only ends by returning")
+}
+
+/// The entry points on [`ZPoly`].
+impl ZPoly {
+    /// The greatest common divisor over `Q[t]`, returned primitive with a
+    /// positive leading coefficient (`gcd(0, 0) = 0`, `gcd(p, 0) = pp(p)`);
+    /// computed by the modular algorithm of [`crate::modular`].
+    pub fn gcd(&self, other: &ZPoly) -> ZPoly {
+        crate::modular::gcd(self, other)
+    }
+    /// The squarefree part `pp(p / gcd(p, p'))`: the product of the distinct
+    /// irreducible factors of `p`, primitive with positive leading coefficient.
+    pub fn squarefree_part(&self) -> ZPoly {
+        if self.degree().is_none_or(|n| n == 0) || crate::modular::squarefree_by_prime(self) {
+            return self.primitive_part();
+        }
+        let g = self.gcd(&self.derivative());
+        if g.degree() == Some(0) {
+            return self.primitive_part();
+        }
+        self.div_exact(&g)
+            .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
+            .primitive_part()
+    }
 }
 
 #[cfg(test)]

@@ -4,7 +4,8 @@
 use crate::matrix::{characteristic, congruence, integral, Mat4};
 use crate::placement::{body_diagonal, norm2, rigid_inverse, rotation_numerator};
 use ccd_arith::{Int, Rat, RingOps};
-use ccd_subres::{classify, closed_forms, Configuration, SignData};
+use ccd_classify::{classify, Configuration, SignData};
+use ccd_subres::closed_forms;
 
 /// An ellipsoid placed in space: semi-axes along its body axes, a centre,
 /// and an orientation quaternion `[w, x, y, z]` (any nonzero quaternion).
@@ -60,7 +61,7 @@ pub fn classify_quartic<R: RingOps>(f: &[R; 5], sign: impl Fn(&R) -> i32) -> Con
 /// ```
 /// use ccd_arith::Rat;
 /// use ccd_quadric::{classify_pair, Ellipsoid};
-/// use ccd_subres::Configuration;
+/// use ccd_classify::Configuration;
 /// let unit = |x: i64| Ellipsoid::axis_aligned([Rat::one(), Rat::one(), Rat::one()], [Rat::from(x), Rat::zero(), Rat::zero()]);
 /// assert_eq!(classify_pair(&unit(0), &unit(2)), Configuration::ExternalTouch);
 /// assert_eq!(classify_pair(&unit(0), &unit(3)), Configuration::Separate);

@@ -9,7 +9,7 @@ mod ellipsoid;
 mod matrix;
 mod placement;
 
-pub use ccd_subres::Configuration;
+pub use ccd_classify::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
 pub use matrix::{
     adj3, adj4, adj4_column, characteristic, congruence, det3, det4, integral,

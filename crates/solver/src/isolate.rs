@@ -21,8 +21,9 @@
 //! filter cannot sign a coefficient, so the caller can fall back to the
 //! exact polynomial.
 
-use crate::float_bernstein::FloatBernstein;
-use crate::root::{RealRoot, SignModel, SignProbe};
+use crate::filter_bernstein::FilterBernstein;
+use crate::model::{SignModel, SignProbe};
+use crate::root::RealRoot;
 use ccd_arith::{Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
@@ -32,7 +33,7 @@ use std::sync::Arc;
 const FILTER_DEPTH: u32 = 64;
 
 enum Coeffs {
-    Float(FloatBernstein),
+    Filter(FilterBernstein),
     Exact(Bernstein),
 }
 
@@ -114,10 +115,10 @@ impl Node {
     fn from_exact_bernstein(b: Bernstein, depth: u32, float: bool, cluster: Cluster) -> Node {
         let (lo, hi) = (b.lo().clone(), b.hi().clone());
         let f = float
-            .then(|| FloatBernstein::from_exact(b.coeffs(), b.scale().signum()))
+            .then(|| FilterBernstein::from_exact(b.coeffs(), b.scale().signum()))
             .filter(|f| f.signs().is_some());
         let coeffs = match f {
-            Some(f) => Coeffs::Float(f),
+            Some(f) => Coeffs::Filter(f),
             None => Coeffs::Exact(b),
         };
         Node {
@@ -131,7 +132,7 @@ impl Node {
 
     fn signs(&self) -> Option<Vec<i32>> {
         match &self.coeffs {
-            Coeffs::Float(f) => f.signs(),
+            Coeffs::Filter(f) => f.signs(),
             Coeffs::Exact(b) => {
                 let s = b.scale().signum();
                 Some(b.coeffs().iter().map(|c| c.signum() * s).collect())
@@ -146,21 +147,21 @@ impl Node {
         let mid = Rat::midpoint(&self.lo, &self.hi);
         let depth = self.depth + 1;
         match self.coeffs {
-            Coeffs::Float(f) => {
+            Coeffs::Filter(f) => {
                 let (l, r) = f.split_half();
                 let s = l.sign_at_hi();
                 let left = Node {
                     lo: self.lo,
                     hi: mid.clone(),
                     depth,
-                    coeffs: Coeffs::Float(l),
+                    coeffs: Coeffs::Filter(l),
                     cluster: self.cluster,
                 };
                 let right = Node {
                     lo: mid,
                     hi: self.hi,
                     depth,
-                    coeffs: Coeffs::Float(r),
+                    coeffs: Coeffs::Filter(r),
                     cluster: self.cluster,
                 };
                 (left, right, s)
@@ -179,7 +180,7 @@ impl Node {
 
     /// Marks the shared endpoint as an exact root in the float form.
     fn set_endpoint_zero(&mut self, at_hi: bool) {
-        if let Coeffs::Float(f) = &mut self.coeffs {
+        if let Coeffs::Filter(f) = &mut self.coeffs {
             f.set_end_zero(at_hi);
         }
     }
@@ -197,7 +198,7 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     undecided: bool,
     /// Splits of nodes with unsigned coefficients left (filter only).
     budget: usize,
-    /// Float nodes that had to be redone exactly, each by a conversion from
+    /// Filter nodes that had to be redone exactly, each by a conversion from
     /// the power basis; past [`FLOAT_FAILURES`] the filter does not pay on
     /// this polynomial (coefficients beyond `f64`'s range, say) and the
     /// children of exact nodes stay exact.
@@ -208,7 +209,7 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     max_work: u64,
 }
 
-/// The default bound on an isolation's exact work ([`exact_work`]), about
+/// The default bound on an isolation's exact work (`exact_work`), about
 /// a second of this machine's time with num-bigint (docs/termination.md).
 pub const MAX_EXACT_WORK: u64 = 4_000_000_000;
 
@@ -248,14 +249,14 @@ impl RootIter<Arc<SignProbe>> {
         // The filter straight from the power basis when the ends are not
         // roots; the exact conversion otherwise (or if it cannot sign).
         let float = (first != 0 && last != 0)
-            .then(|| FloatBernstein::from_power(poly, lo, hi))
+            .then(|| FilterBernstein::from_power(poly, lo, hi))
             .flatten();
         let root = match float {
             Some(f) => Node {
                 lo: lo.clone(),
                 hi: hi.clone(),
                 depth: 0,
-                coeffs: Coeffs::Float(f),
+                coeffs: Coeffs::Filter(f),
                 cluster: Cluster::default(),
             },
             None => Node::from_exact_bernstein(
@@ -292,7 +293,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// than `2^(−64)` of the interval, the iteration ends early and
     /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
-        let f = FloatBernstein::from_intervals(coeffs);
+        let f = FilterBernstein::from_intervals(coeffs);
         let undecided = coeffs.len() < 2 || lo >= hi || f.signs().is_none();
         let stack = if undecided {
             vec![]
@@ -301,7 +302,7 @@ impl<M: SignModel + Clone> RootIter<M> {
                 lo: lo.clone(),
                 hi: hi.clone(),
                 depth: 0,
-                coeffs: Coeffs::Float(f),
+                coeffs: Coeffs::Filter(f),
                 cluster: Cluster::default(),
             })]
         };
@@ -394,7 +395,7 @@ impl<M: SignModel + Clone> RootIter<M> {
         let converted;
         let b = match &node.coeffs {
             Coeffs::Exact(b) => b,
-            Coeffs::Float(_) => {
+            Coeffs::Filter(_) => {
                 converted = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
                 self.charge(&converted, end_bits(&converted));
                 &converted

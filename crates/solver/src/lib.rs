@@ -17,13 +17,15 @@
 
 #![warn(missing_docs)]
 
-mod float_bernstein;
+mod filter_bernstein;
 mod isolate;
+mod model;
 mod root;
 mod scaled;
 
 pub use isolate::{RootIter, MAX_EXACT_WORK};
-pub use root::{ExactJet, RealRoot, SignModel, SignProbe};
+pub use model::{ExactJet, SignModel, SignProbe};
+pub use root::RealRoot;
 pub use scaled::ScaledPoly;
 
 use ccd_arith::Rat;

@@ -1,6 +1,6 @@
 //! Signed subresultant sequences (Sylvester–Habicht) over any exact ring,
-//! and the closed forms and sign logic for the quartic characteristic
-//! polynomial of two ellipsoids.
+//! and the closed forms for the quartic characteristic polynomial of two
+//! ellipsoids.
 //!
 //! This implements Sections 2–4 of Jia, Choi, Mourrain & Wang, "An
 //! algebraic approach to continuous collision detection for ellipsoids"
@@ -12,27 +12,28 @@
 //!   [`signed_subresultants`], [`subresultants_with_derivative`] (module
 //!   `habicht`): Definition 2.2, reproducing eq. (2) exactly, and the
 //!   gcd property of Lemma 2.3;
-//! * [`closed_forms`] (module `quartic`): the Section 4 formulas for the
-//!   five quantities `sr22, sr20, sr11, sr10, sr0` of Theorem 3.10, in a
-//!   homogeneous division-free form valid for any leading coefficient;
-//! * [`classify`] / [`classify_with`]: Theorem 3.10 / Table 2 as a single
-//!   decision tree over signs, shared by every caller (exact rationals,
-//!   polynomials evaluated at algebraic numbers, intervals).
+//! * [`closed_forms`], [`closed_form`] (module `closed_forms`): the
+//!   Section 4 formulas for the five quantities `sr22, sr20, sr11, sr10,
+//!   sr0` of Theorem 3.10, in a homogeneous division-free form valid for
+//!   any leading coefficient.
+//!
+//! The decision of Theorem 3.10 / Table 2 over their signs is the crate
+//! `ccd-classify`.
 //!
 //! Everything here depends only on `ccd-arith`.
 
 #![warn(missing_docs)]
 
+mod closed_forms;
 mod det;
+#[cfg(any(test, feature = "fixtures"))]
+#[doc(hidden)]
+pub mod fixtures;
 mod habicht;
-mod quartic;
 
+pub use closed_forms::{closed_form, closed_forms, Quantity, QuarticInvariants};
 pub use det::determinant;
 pub use habicht::{
     derivative, signed_subresultant, signed_subresultants, subresultants_with_derivative,
     sylvester_habicht,
-};
-pub use quartic::{
-    classify, classify_with, closed_form, closed_forms, sign_variations, Configuration, Quantity,
-    QuarticInvariants, SignData,
 };

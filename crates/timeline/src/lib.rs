@@ -6,7 +6,7 @@
 #![warn(missing_docs)]
 
 use ccd_arith::Rat;
-use ccd_subres::Configuration;
+use ccd_classify::Configuration;
 
 /// The configuration of the two ellipsoids on a segment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -1,5 +1,16 @@
-//! The certified filter: Bernstein coefficients in `f64`, each with its
-//! own error bound, subdivided by de Casteljau's algorithm in plain `f64`.
+//! [`FilterBernstein`], the certified filter of the exact isolation:
+//! Bernstein coefficients in `f64`, each with its own error bound,
+//! subdivided by de Casteljau's algorithm in plain `f64`.
+//!
+//! **Which Bernstein form is for what.** The exact path's Bernstein form is
+//! [`ccd_poly::Bernstein`] (integers times one rational over a rational
+//! interval): it is the truth, and every sign it gives is exact. A
+//! `FilterBernstein` is a cheap stand-in for it at one node of
+//! [`crate::RootIter`]'s subdivision: it answers a coefficient's sign only
+//! when the sign is proven by the error bound, and otherwise the node is
+//! redone with the exact `Bernstein`. (Not to be confused with
+//! `ccd_float::BernsteinF64`, the uncertified float path's polynomials,
+//! which carry magnitudes for tolerances, not proofs.)
 //!
 //! The exact integer coefficients are scaled by one common power of two so
 //! that the largest fits comfortably in `f64`. A node holds approximations
@@ -35,7 +46,7 @@ const TINY: f64 = f64::from_bits(4);
 /// A node's Bernstein coefficients (the exact values times one positive
 /// factor) as `f64` approximations with error bounds.
 #[derive(Clone, Debug)]
-pub(crate) struct FloatBernstein {
+pub(crate) struct FilterBernstein {
     coeffs: Vec<f64>,
     /// `errs[i] ≥ |coeffs[i] − exact_i|` (`0.0 ± 0` marks a coefficient
     /// known to be exactly zero, e.g. at an end that is an exact root; de
@@ -43,10 +54,10 @@ pub(crate) struct FloatBernstein {
     errs: Vec<f64>,
 }
 
-impl FloatBernstein {
+impl FilterBernstein {
     /// From interval enclosures of the exact (scaled) coefficients: their
     /// midpoints and distances to the farther end.
-    pub(crate) fn from_intervals(iv: &[Interval]) -> FloatBernstein {
+    pub(crate) fn from_intervals(iv: &[Interval]) -> FilterBernstein {
         let coeffs: Vec<f64> = iv.iter().map(Interval::mid).collect();
         let errs = iv
             .iter()
@@ -60,11 +71,11 @@ impl FloatBernstein {
                 }
             })
             .collect();
-        FloatBernstein { coeffs, errs }
+        FilterBernstein { coeffs, errs }
     }
 
     /// Encloses `sign · coeffs` scaled by a common power of two.
-    pub(crate) fn from_exact(coeffs: &[Int], sign: i32) -> FloatBernstein {
+    pub(crate) fn from_exact(coeffs: &[Int], sign: i32) -> FilterBernstein {
         let max_bits = coeffs.iter().map(Int::bits).max().unwrap_or(0) as i64;
         let shift = (max_bits - TARGET_BITS).max(0);
         let iv: Vec<Interval> = coeffs
@@ -78,7 +89,7 @@ impl FloatBernstein {
                 }
             })
             .collect();
-        FloatBernstein::from_intervals(&iv)
+        FilterBernstein::from_intervals(&iv)
     }
 
     /// Encloses the Bernstein coefficients of `p` over `[lo, hi]` (times a
@@ -89,7 +100,7 @@ impl FloatBernstein {
     /// then enclosed as `c_i / C(n, i)` with one rounding (no cancellation).
     /// The signs of the `c_i` are exact. Requires `p(lo) ≠ 0` and `p(hi) ≠ 0`
     /// (so the reversals keep the degree); `None` if a sign is undecided.
-    pub(crate) fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<FloatBernstein> {
+    pub(crate) fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<FilterBernstein> {
         let n = p.degree()?;
         let c = if lo.is_zero() && *hi == Rat::one() {
             p.scaled_bernstein()
@@ -109,7 +120,7 @@ impl FloatBernstein {
                 Interval::from_int_scaled(ci, shift).div_positive(Interval::from_int(&b))
             })
             .collect();
-        let fb = FloatBernstein::from_intervals(&iv);
+        let fb = FilterBernstein::from_intervals(&iv);
         fb.signs().map(|_| fb)
     }
 
@@ -146,7 +157,7 @@ impl FloatBernstein {
 
     /// De Casteljau at `1/2`: the coefficients over the two halves, with the
     /// error bounds of the module documentation.
-    pub(crate) fn split_half(&self) -> (FloatBernstein, FloatBernstein) {
+    pub(crate) fn split_half(&self) -> (FilterBernstein, FilterBernstein) {
         let n = self.coeffs.len() - 1;
         // Two buffers per quantity, level k read from one and written to
         // the other: no aliasing, so the steps vectorise.
@@ -179,7 +190,7 @@ impl FloatBernstein {
             right.0[n - k] = b[len - 1];
             right.1[n - k] = e[len - 1];
         }
-        let child = |(coeffs, errs)| FloatBernstein { coeffs, errs };
+        let child = |(coeffs, errs)| FilterBernstein { coeffs, errs };
         (child(left), child(right))
     }
 }
@@ -193,7 +204,7 @@ mod tests {
     fn split_encloses_exact_halves() {
         // p(u) = (u - 1/3)(u - 2/3) in Bernstein form over [0, 1]:
         // b = [2/9, -5/18, 2/9] -> times 18: [4, -5, 4].
-        let fb = FloatBernstein::from_exact(&[Int::from(4), Int::from(-5), Int::from(4)], 1);
+        let fb = FilterBernstein::from_exact(&[Int::from(4), Int::from(-5), Int::from(4)], 1);
         assert_eq!(fb.signs(), Some(vec![1, -1, 1]));
         let (l, r) = fb.split_half();
         // Exact halves: left [4, -1/2, -1/4]·..., check signs only.
@@ -214,7 +225,7 @@ mod tests {
             (Rat::from_frac(1, 7), Rat::from(4)),
         ] {
             let exact = Bernstein::from_power(&p, &lo, &hi);
-            let float = FloatBernstein::from_power(&p, &lo, &hi).expect("well conditioned");
+            let float = FilterBernstein::from_power(&p, &lo, &hi).expect("well conditioned");
             let signs: Vec<i32> = exact.coeffs().iter().map(|c| c.signum()).collect();
             assert_eq!(float.signs(), Some(signs));
         }
@@ -248,7 +259,7 @@ mod tests {
         ) {
             let ints: Vec<Int> = raw.iter().map(|(m, k)| Int::from(*m).shl(u64::from(*k))).collect();
             let mut exact: Vec<Rat> = ints.iter().map(|c| Rat::from(c.clone())).collect();
-            let mut fb = FloatBernstein::from_exact(&ints, 1);
+            let mut fb = FilterBernstein::from_exact(&ints, 1);
             for right in path {
                 let (l, r) = fb.split_half();
                 let (el, er) = exact_halves(&exact);
@@ -268,7 +279,7 @@ mod tests {
     #[test]
     fn huge_coefficients_keep_their_signs() {
         let big = Int::from(7).pow(1000);
-        let fb = FloatBernstein::from_exact(&[big.clone(), -big.clone(), Int::from(1)], -1);
+        let fb = FilterBernstein::from_exact(&[big.clone(), -big.clone(), Int::from(1)], -1);
         assert_eq!(fb.sign(0), Some(-1));
         assert_eq!(fb.sign(1), Some(1));
         // 1 vanishes next to 7^1000 after scaling: undecided, never wrong.

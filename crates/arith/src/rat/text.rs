@@ -1,0 +1,300 @@
+//! [`Rat`] as text: the exact decimal and fraction parser
+//! ([`Rat::parse_exact`], `FromStr`) with its limits and errors, and the
+//! output forms (`Display`'s `p/q`, [`Rat::to_decimal`]).
+
+use super::Rat;
+use crate::Int;
+
+/// Why a decimal or fraction text is not an exact rational.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ParseRatError {
+    /// The text is empty.
+    #[error("empty number")]
+    Empty,
+    /// `inf` or `nan`: not a finite rational.
+    #[error("`{0}` is not a finite number")]
+    NotFinite(String),
+    /// `p/0`.
+    #[error("zero denominator in `{0}`")]
+    ZeroDenominator(String),
+    /// Longer than [`Rat::MAX_TEXT`] characters or an exponent beyond
+    /// [`Rat::MAX_EXPONENT`]: refused rather than allocated.
+    #[error("`{0}` is too large (at most {max_len} characters and |exponent| <= {max_exp})", max_len = Rat::MAX_TEXT, max_exp = Rat::MAX_EXPONENT)]
+    TooLarge(String),
+    /// Anything else.
+    #[error("`{0}` is not a number (expected an integer, a decimal such as 0.125 or 1e-20, or a fraction p/q)")]
+    Invalid(String),
+}
+
+impl Rat {
+    /// Longest number text, in bytes, accepted by the parser.
+    pub const MAX_TEXT: usize = 4096;
+    /// Largest magnitude of a written decimal exponent (`1e4096`, `1e-4096`)
+    /// accepted by the parser.
+    pub const MAX_EXPONENT: i64 = 4096;
+    /// Most characters of input text quoted in an error message (see
+    /// [`excerpt`]).
+    pub const QUOTED_TEXT: usize = 64;
+
+    /// `self` correctly rounded to `digits` decimals (half away from zero),
+    /// as text such as `0.539504286803`.
+    pub fn to_decimal(&self, digits: u32) -> String {
+        let scale = Int::pow10(digits);
+        let scaled = &self.num.abs() * &scale;
+        let twice = scaled.shl(1) + &self.den;
+        let q = twice.div_floor(&self.den.shl(1));
+        let mut s = q.to_string();
+        if digits > 0 {
+            let d = digits as usize;
+            if s.len() <= d {
+                s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
+            }
+            s.insert(s.len() - d, '.');
+        }
+        if self.num.is_negative() && q.signum() != 0 {
+            s.insert(0, '-');
+        }
+        s
+    }
+    /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`, `+2`) or a
+    /// fraction (`-7/2`) exactly.
+    ///
+    /// The grammar is strict: an optional sign `+` or `-` leads the number
+    /// (a fraction's denominator has none), and no whitespace or `_`
+    /// separator is accepted anywhere, so `" 2 "` and `"1 / 2"` are
+    /// [`ParseRatError::Invalid`]. Limits, refused as
+    /// [`ParseRatError::TooLarge`] before any big number is formed: at most
+    /// [`Rat::MAX_TEXT`] bytes of text, and a written exponent (the digits
+    /// after `e`) of magnitude at most [`Rat::MAX_EXPONENT`]. Texts quoted in
+    /// errors are cut by [`excerpt`].
+    pub fn parse_exact(t: &str) -> Result<Rat, ParseRatError> {
+        if t.is_empty() {
+            return Err(ParseRatError::Empty);
+        }
+        if t.len() > Rat::MAX_TEXT {
+            return Err(ParseRatError::TooLarge(excerpt(t)));
+        }
+        let invalid = || ParseRatError::Invalid(excerpt(t));
+        if t.chars().any(char::is_whitespace) {
+            return Err(invalid());
+        }
+        let lower = t.to_ascii_lowercase();
+        let unsigned = lower.strip_prefix(['+', '-']).unwrap_or(&lower);
+        if unsigned == "inf" || unsigned == "nan" || unsigned == "infinity" {
+            return Err(ParseRatError::NotFinite(excerpt(t)));
+        }
+        if let Some((p, q)) = t.split_once('/') {
+            let num = Int::parse_decimal(p).ok_or_else(invalid)?;
+            if q.starts_with(['+', '-']) {
+                return Err(invalid());
+            }
+            let den = Int::parse_decimal(q).ok_or_else(invalid)?;
+            return Rat::new(num, den).ok_or_else(|| ParseRatError::ZeroDenominator(excerpt(t)));
+        }
+        let (neg, body) = match t.as_bytes()[0] {
+            b'-' => (true, &t[1..]),
+            b'+' => (false, &t[1..]),
+            _ => (false, t),
+        };
+        let (mantissa, exp) = match body.find(['e', 'E']) {
+            Some(i) => {
+                let e = &body[i + 1..];
+                let ed = e.strip_prefix(['+', '-']).unwrap_or(e);
+                if ed.is_empty() || !ed.bytes().all(|b| b.is_ascii_digit()) {
+                    return Err(invalid());
+                }
+                // Leading zeros do not make an exponent large.
+                let significant = ed.trim_start_matches('0');
+                if significant.len() > 6 {
+                    return Err(ParseRatError::TooLarge(excerpt(t)));
+                }
+                let magnitude: i64 = significant.parse().unwrap_or(0);
+                if magnitude > Rat::MAX_EXPONENT {
+                    return Err(ParseRatError::TooLarge(excerpt(t)));
+                }
+                let ev = if e.starts_with('-') {
+                    -magnitude
+                } else {
+                    magnitude
+                };
+                (&body[..i], ev)
+            }
+            None => (body, 0),
+        };
+        let (ip, fp) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+        if (ip.is_empty() && fp.is_empty())
+            || !ip.bytes().all(|b| b.is_ascii_digit())
+            || !fp.bytes().all(|b| b.is_ascii_digit())
+        {
+            return Err(invalid());
+        }
+        // |exp| <= MAX_EXPONENT + MAX_TEXT: the text bounds the fraction digits.
+        let exp = exp - fp.len() as i64;
+        let digits = format!("{ip}{fp}");
+        let mut num = Int::parse_decimal(&digits).ok_or_else(invalid)?;
+        if neg {
+            num = -num;
+        }
+        let p10 = Int::pow10(exp.unsigned_abs() as u32);
+        Ok(if exp >= 0 {
+            Rat::from_int(num * p10)
+        } else {
+            Rat::reduce(num, p10)
+        })
+    }
+}
+
+/// `t` as quoted in an error message: at most [`Rat::QUOTED_TEXT`]
+/// characters, with `…` appended when it was cut. Shared by every message
+/// that echoes input text (numbers here, keys and kinds in `ccd-scene`).
+pub fn excerpt(t: &str) -> String {
+    let mut chars = t.chars();
+    let mut q: String = chars.by_ref().take(Rat::QUOTED_TEXT).collect();
+    if chars.next().is_some() {
+        q.push('…');
+    }
+    q
+}
+
+impl std::str::FromStr for Rat {
+    type Err = ParseRatError;
+    fn from_str(s: &str) -> Result<Rat, ParseRatError> {
+        Rat::parse_exact(s)
+    }
+}
+
+impl std::fmt::Display for Rat {
+    /// `p` or `p/q` in lowest terms: the contract's exact time format.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.den.is_one() {
+            write!(f, "{}", self.num)
+        } else {
+            write!(f, "{}/{}", self.num, self.den)
+        }
+    }
+}
+impl std::fmt::Debug for Rat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(s: &str) -> Rat {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn parses_the_contract_forms() {
+        assert_eq!(r("3"), Rat::from(3));
+        assert_eq!(r("0.1"), Rat::from_frac(1, 10));
+        assert_eq!(r("-2.5e-3"), Rat::from_frac(-1, 400));
+        assert_eq!(r("1/3"), Rat::from_frac(1, 3));
+        assert_eq!(r("-7/2"), Rat::from_frac(-7, 2));
+        assert_eq!(r("0.125"), Rat::from_frac(1, 8));
+        assert_eq!(r("1e-20"), Rat::new(Int::one(), Int::pow10(20)).unwrap());
+        assert_eq!(r("1E5"), Rat::from(100000));
+        assert_eq!(r(".5"), Rat::from_frac(1, 2));
+        assert_eq!(r("5."), Rat::from(5));
+    }
+
+    #[test]
+    fn rejects_what_the_contract_rejects() {
+        assert_eq!(Rat::parse_exact(""), Err(ParseRatError::Empty));
+        assert!(matches!(
+            Rat::parse_exact("inf"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("-nan"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("1/0"),
+            Err(ParseRatError::ZeroDenominator(_))
+        ));
+        assert!(matches!(
+            Rat::parse_exact("1e999999999"),
+            Err(ParseRatError::TooLarge(_))
+        ));
+        // Over-long text cut for the message at a character boundary, not a byte.
+        let long = format!("1{}", "é".repeat(3000));
+        assert!(matches!(
+            Rat::parse_exact(&long),
+            Err(ParseRatError::TooLarge(_))
+        ));
+        for bad in [
+            "abc", "1/-2", "1/+2", "1.2.3", "e5", "1e", "--1", "+-1", "1/2/3", "0x1", " 2", "2 ",
+            " 2 ", "1 / 2", "1/ 2", "1 e5", "\t1", "1\n", "1_000", "+", "-",
+        ] {
+            assert!(
+                matches!(Rat::parse_exact(bad), Err(ParseRatError::Invalid(_))),
+                "{bad}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_leading_plus_is_a_sign() {
+        assert_eq!(r("+2"), Rat::from(2));
+        assert_eq!(r("+1/3"), Rat::from_frac(1, 3));
+        assert_eq!(r("+2.5e+1"), Rat::from(25));
+        assert!(matches!(
+            Rat::parse_exact("+inf"),
+            Err(ParseRatError::NotFinite(_))
+        ));
+    }
+
+    #[test]
+    fn the_exponent_limit_is_the_written_exponent() {
+        let max = Rat::MAX_EXPONENT;
+        assert_eq!(
+            r(&format!("1e{max}")),
+            Rat::from_int(Int::pow10(max as u32))
+        );
+        assert_eq!(
+            r(&format!("1e-{max}")),
+            Rat::new(Int::one(), Int::pow10(max as u32)).unwrap()
+        );
+        // Leading zeros do not count.
+        assert_eq!(r(&format!("1e000000{max}")), r(&format!("1e{max}")));
+        for over in [
+            format!("1e{}", max + 1),
+            format!("1e-{}", max + 1),
+            format!("1e{}", 2 * max),
+            "1E8192".to_string(),
+            "-1e+8192".to_string(),
+            "1e1000000".to_string(),
+        ] {
+            assert!(
+                matches!(Rat::parse_exact(&over), Err(ParseRatError::TooLarge(_))),
+                "{over}"
+            );
+        }
+        // Fraction digits are bounded by the text length, not the exponent.
+        let tiny = format!("0.{}1", "0".repeat(4000));
+        assert_eq!(r(&tiny), Rat::new(Int::one(), Int::pow10(4001)).unwrap());
+    }
+
+    #[test]
+    fn rejected_texts_are_quoted_cut() {
+        let long = format!("{}x", "1".repeat(3000));
+        let msg = Rat::parse_exact(&long).unwrap_err().to_string();
+        assert!(msg.len() < 300, "{msg}");
+        assert!(msg.contains('…'), "{msg}");
+        let short = Rat::parse_exact("1.2.3").unwrap_err().to_string();
+        assert!(short.contains("`1.2.3`") && !short.contains('…'), "{short}");
+    }
+
+    #[test]
+    fn decimal_output_rounds_half_away() {
+        assert_eq!(Rat::from_frac(1, 3).to_decimal(4), "0.3333");
+        assert_eq!(Rat::from_frac(2, 3).to_decimal(4), "0.6667");
+        assert_eq!(Rat::from_frac(-1, 8).to_decimal(2), "-0.13");
+        assert_eq!(Rat::from(7).to_decimal(0), "7");
+        assert_eq!(Rat::zero().to_decimal(3), "0.000");
+    }
+}

@@ -1,0 +1,241 @@
+//! Dividing [`ZPoly`]s: by an integer, exact division and pseudo-division
+//! by a polynomial, and the content and primitive part.
+
+use super::ZPoly;
+use ccd_arith::Int;
+
+/// Binary gcd (`gcd(0, 0) = 0`).
+fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// `gcd` of the entries, `≥ 0` (`0` when all vanish), stopping as soon as
+/// the running gcd is `1`.
+pub(crate) fn content_of(c: &[Int]) -> Int {
+    // Machine integers when every entry fits (the usual case for the
+    // characteristic polynomial of decimal scenes).
+    let mut g = Some(0u128);
+    for x in c {
+        g = g
+            .zip(x.to_i128())
+            .map(|(g, v)| gcd_u128(g, v.unsigned_abs()));
+        if g.is_none_or(|g| g == 1) {
+            break;
+        }
+    }
+    if let Some(g) = g {
+        return Int::from_i128(g as i128);
+    }
+    // Start from the smallest coefficient (the gcd divides it), and reduce
+    // each larger coefficient modulo the running gcd before the gcd itself:
+    // one division instead of a binary gcd on full-size numbers.
+    let Some(smallest) = c.iter().filter(|x| !x.is_zero()).min_by_key(|x| x.bits()) else {
+        return Int::zero();
+    };
+    let mut g = smallest.abs();
+    for x in c {
+        if g.is_one() {
+            break;
+        }
+        if x.is_zero() {
+            continue;
+        }
+        let r = if x.bits() > g.bits() + 64 {
+            x.div_rem_trunc(&g).1
+        } else {
+            x.clone()
+        };
+        g = g.gcd(&r);
+    }
+    g
+}
+
+impl ZPoly {
+    /// `p / c` coefficientwise; the caller guarantees `c ≠ 0` divides every
+    /// coefficient (checked in debug builds).
+    pub fn div_exact_int(&self, c: &Int) -> ZPoly {
+        if c.is_one() {
+            return self.clone();
+        }
+        ZPoly {
+            c: self.c.iter().map(|x| x.div_exact(c)).collect(),
+        }
+    }
+    /// The exact quotient `q ∈ Z[t]` with `self = q·d`, or `None` when `d`
+    /// does not divide `self` in `Z[t]` (or `d = 0`).
+    ///
+    /// Long division from the top: each quotient coefficient is the exact
+    /// integer quotient of the current top coefficient by `lc(d)`; the first
+    /// inexact step (or a nonzero remainder) answers `None` at once. Since
+    /// the quotient of a division in `Q[t]` is unique, this decides
+    /// divisibility in `Z[t]`; for primitive `d` it also decides
+    /// divisibility in `Q[t]` (Gauss's lemma).
+    pub fn div_exact(&self, d: &ZPoly) -> Option<ZPoly> {
+        let (dl, dd) = (d.leading()?, d.degree()?);
+        let Some(n) = self.degree() else {
+            return Some(ZPoly::zero());
+        };
+        if n < dd {
+            return None;
+        }
+        // Cheap necessary condition on the lowest terms: t^v ‖ d forces
+        // t^v | self and d_v | self_v.
+        let v = d.c.iter().position(|x| !x.is_zero()).unwrap_or(0);
+        if self.c[..v].iter().any(|x| !x.is_zero()) || !self.c[v].is_divisible_by(&d.c[v]) {
+            return None;
+        }
+        let unit = dl.abs().is_one();
+        let mut r = self.c.clone();
+        let mut q = vec![Int::zero(); n - dd + 1];
+        for k in (0..=n - dd).rev() {
+            let top = &r[k + dd];
+            if top.is_zero() {
+                continue;
+            }
+            let qk = if unit {
+                if dl.is_one() {
+                    top.clone()
+                } else {
+                    -top
+                }
+            } else {
+                let (qk, rem) = top.div_rem_trunc(dl);
+                if !rem.is_zero() {
+                    return None;
+                }
+                qk
+            };
+            let neg = -&qk;
+            for (ri, di) in r[k..k + dd].iter_mut().zip(&d.c) {
+                ri.add_mul(&neg, di);
+            }
+            r[k + dd] = Int::zero();
+            q[k] = qk;
+        }
+        if r[..dd].iter().any(|x| !x.is_zero()) {
+            return None;
+        }
+        Some(ZPoly::new(q))
+    }
+    /// Pseudo-division: `(q, r)` with `lc(d)^(deg self − deg d + 1)·self = q·d + r`
+    /// and `deg r < deg d` (for `deg self < deg d`: `q = 0`, `r = self`).
+    /// Panics if `d = 0`.
+    pub fn pseudo_div_rem(&self, d: &ZPoly) -> (ZPoly, ZPoly) {
+        let (dl, dd) = (
+            d.leading()
+                .expect("pseudo_div_rem: division by the zero polynomial"),
+            d.c.len() - 1,
+        );
+        let Some(n) = self.degree().filter(|&n| n >= dd) else {
+            return (ZPoly::zero(), self.clone());
+        };
+        let mut r = self.c.clone();
+        let mut q = vec![Int::zero(); n - dd + 1];
+        for k in (0..=n - dd).rev() {
+            // r ← lc(d)·r − r_top·t^k·d, q ← lc(d)·q + r_top·t^k.
+            let top = std::mem::take(&mut r[k + dd]);
+            for x in q.iter_mut().chain(r[..k + dd].iter_mut()) {
+                *x *= dl;
+            }
+            let neg = -&top;
+            for (ri, di) in r[k..k + dd].iter_mut().zip(&d.c) {
+                ri.add_mul(&neg, di);
+            }
+            q[k] = top;
+        }
+        r.truncate(dd);
+        (ZPoly::new(q), ZPoly::new(r))
+    }
+    /// The content: `gcd` of the coefficients, `≥ 0` (`0` for the zero
+    /// polynomial); stops as soon as the running gcd is `1`.
+    pub fn content(&self) -> Int {
+        content_of(&self.c)
+    }
+    /// `p / (±content)`, with positive leading coefficient; zero stays zero.
+    pub fn primitive_part(&self) -> ZPoly {
+        let Some(lc) = self.leading() else {
+            return ZPoly::zero();
+        };
+        let g = self.content();
+        let g = if lc.is_negative() { -g } else { g };
+        self.div_exact_int(&g)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testutil::{zpoly, zpoly_deg};
+    use ccd_arith::Ring;
+    use proptest::prelude::*;
+
+    fn z(c: &[i64]) -> ZPoly {
+        ZPoly::from_i64s(c)
+    }
+
+    #[test]
+    fn exact_division_fails_fast_on_non_divisors() {
+        let (t1, t2) = (z(&[1, 1]), z(&[2, 2]));
+        assert_eq!(t2.div_exact(&t1), Some(z(&[2])));
+        assert_eq!(t1.div_exact(&t2), None); // quotient 1/2 ∉ Z[t]
+        assert_eq!(t1.div_exact(&ZPoly::zero()), None);
+        assert_eq!(ZPoly::zero().div_exact(&t1), Some(ZPoly::zero()));
+        assert_eq!(z(&[1]).div_exact(&t1), None);
+        assert_eq!(z(&[0, 0, 3, 3]).div_exact(&z(&[0, 1, 1])), Some(z(&[0, 3])));
+        assert_eq!(z(&[1, 0, 3, 3]).div_exact(&z(&[0, 1, 1])), None);
+        let (q, r) = z(&[1, 2, 3, 4]).pseudo_div_rem(&z(&[1, 2]));
+        // 2³·(4t³ + 3t² + 2t + 1) = q·(2t + 1) + r
+        assert_eq!(&(&q * &z(&[1, 2])) + &r, z(&[8, 16, 24, 32]));
+        assert_eq!(r.degree(), Some(0));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        #[test]
+        fn exact_division_inverts_products(a in zpoly(10, 200), b in zpoly_deg(0, 8, 200), c in any::<i64>()) {
+            let ab = &a * &b;
+            prop_assert_eq!(ab.div_exact(&b), Some(a.clone()));
+            prop_assert_eq!(<ZPoly as Ring>::div_exact(&ab, &b), a.clone());
+            // Adding a nonzero constant when deg b ≥ 1 breaks divisibility.
+            if b.degree() >= Some(1) && c != 0 {
+                prop_assert_eq!((&ab + &z(&[c])).div_exact(&b), None);
+            }
+        }
+
+        #[test]
+        fn content_and_primitive_part(p in zpoly_deg(0, 10, 200), c in 1i64..10_000, neg in any::<bool>()) {
+            let c = Int::from(if neg { -c } else { c });
+            let pp = p.primitive_part();
+            prop_assert!(pp.leading().is_some_and(|l| l.is_positive()));
+            prop_assert!(pp.content().is_one());
+            let scaled = p.mul_int(&c);
+            prop_assert_eq!(scaled.content(), &p.content() * &c.abs());
+            prop_assert_eq!(scaled.primitive_part(), pp.clone());
+            prop_assert_eq!(pp.mul_int(&p.content()), if p.leading().is_some_and(|l| l.is_negative()) { -p.clone() } else { p.clone() });
+        }
+
+        /// The machine-integer content agrees with big-integer gcds, on
+        /// both sides of the `i128` limit.
+        #[test]
+        fn content_matches_pairwise_gcds(p in zpoly_deg(0, 10, 140), c in 1i64..1_000_000) {
+            let scaled = p.mul_int(&Int::from(c));
+            let want = scaled.coeffs().iter().fold(Int::zero(), |g, x| g.gcd(x));
+            prop_assert_eq!(scaled.content(), want);
+        }
+    }
+}
