@@ -166,10 +166,13 @@ impl Rat {
     pub fn to_f64(&self) -> f64 {
         let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
         // Scale so both parts fit comfortably in f64 before dividing.
-        let s = (nb - db).clamp(-1000, 1000);
+        let s = (nb - db).clamp(-1100, 1100);
         let shifted = self.mul_pow2(60 - s);
         let q = shifted.num.div_trunc(&shifted.den);
-        q.to_f64() * 2f64.powi((s - 60) as i32)
+        // `2^(s − 60)` in two factors, each a normal power of two (one
+        // factor underflows or overflows where the value need not).
+        let e = (s - 60) as i32;
+        q.to_f64() * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
     }
 }
 
