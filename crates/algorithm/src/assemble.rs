@@ -75,18 +75,50 @@ pub fn sample_between(lo: &Rat, hi: &Rat) -> Rat {
     Rat::simplest_in(&(lo + &quarter), &(hi - &quarter))
 }
 
-/// The state of the piece `(start, end)` between breaks, read at a sample
-/// inside (Theorem 5.1: no candidate root lies in it).
-fn piece<O: Oracle>(o: &O, start: Instant, end: Instant) -> Result<Segment, CcdError> {
-    let x = sample_between(&start.hi, &end.lo);
+/// What a breakpoint of the timeline is.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Point {
+    /// `t0` or `t1`.
+    End,
+    /// A contact's enclosure (a root of the candidate polynomial in it).
+    Contact,
+    /// An end of a gap (not proven a non-root).
+    Gap,
+}
+
+/// The sample of the piece from `start` to `end`: with
+/// [`Oracle::SAMPLE_AT_ENDS`], the simplest rational of the closed piece
+/// `[start.hi, end.lo]` unless it is a contact's exact instant (the cheapest
+/// to evaluate exactly, often `t0` itself); otherwise, and for an arithmetic
+/// of enclosures, which need room around a root, [`sample_between`].
+fn sample<O: Oracle>(start: (&Instant, Point), end: (&Instant, Point)) -> Rat {
+    let (lo, hi) = (&start.0.hi, &end.0.lo);
+    if O::SAMPLE_AT_ENDS && lo != hi {
+        let s = Rat::simplest_in(lo, hi);
+        let root = |(i, p): (&Instant, Point)| p == Point::Contact && i.lo == i.hi && i.lo == s;
+        if !root(start) && !root(end) {
+            return s;
+        }
+    }
+    sample_between(lo, hi)
+}
+
+/// The state of the piece from `start` to `end` between breaks, read at a
+/// sample (Theorem 5.1: no candidate root lies in it).
+fn piece<O: Oracle>(
+    o: &O,
+    start: (Instant, Point),
+    end: (Instant, Point),
+) -> Result<Segment, CcdError> {
+    let x = sample::<O>((&start.0, start.1), (&end.0, end.1));
     let mut d = state_at(o, &x);
     if d.state == State::Touch {
         d = o.touch_between_contacts(&x, d)?;
     }
     Ok(Segment {
         state: d.state,
-        start,
-        end,
+        start: start.0,
+        end: end.0,
         certified: d.certified,
     })
 }
@@ -119,6 +151,9 @@ pub(crate) fn assemble<O: Oracle>(
     let mut roots: Vec<(Instant, Option<O::Root>)> = Vec::new();
     let breaks = walk.breaks;
     let found_any = !breaks.is_empty();
+    // A first-contact query that found a contact stops there (a gap it
+    // stopped at may still be filled to t1 by the oracle's certificates).
+    let at_contact = matches!(breaks.first(), Some(Break::Contact(..)));
     if let Some(d) = throughout {
         items.push(Item::Segment(Segment {
             state: d.state,
@@ -150,19 +185,22 @@ pub(crate) fn assemble<O: Oracle>(
             Break::Gap(lo, _, _) => lo == d0,
             Break::Contact(c, _) => c.lo == *d0 && c.hi == *d0,
         };
-        let mut prev =
-            (!breaks.first().is_some_and(replaces_t0)).then(|| (Instant::exact(d0.clone()), false));
-        let between = |p: &Instant, p_gap: bool, next: &Instant, next_gap: bool| {
+        let mut prev = (!breaks.first().is_some_and(replaces_t0))
+            .then(|| (Instant::exact(d0.clone()), Point::End));
+        let between = |(p, pk): &(Instant, Point), (next, nk): &(Instant, Point)| {
             p.hi < next.lo
-                || (p.hi == next.lo && !p_gap && !next_gap && (p.lo != p.hi || next.lo != next.hi))
+                || (p.hi == next.lo
+                    && *pk != Point::Gap
+                    && *nk != Point::Gap
+                    && (p.lo != p.hi || next.lo != next.hi))
         };
         for br in breaks {
-            let (entry, gap) = match &br {
-                Break::Contact(c, _) => (c.clone(), false),
-                Break::Gap(lo, _, _) => (Instant::exact(lo.clone()), true),
+            let entry = match &br {
+                Break::Contact(c, _) => (c.clone(), Point::Contact),
+                Break::Gap(lo, _, _) => (Instant::exact(lo.clone()), Point::Gap),
             };
-            if let Some((p, p_gap)) = prev.take() {
-                if between(&p, p_gap, &entry, gap) {
+            if let Some(p) = prev.take() {
+                if between(&p, &entry) {
                     items.push(Item::Segment(piece(o, p, entry.clone())?));
                 }
             }
@@ -175,7 +213,7 @@ pub(crate) fn assemble<O: Oracle>(
                         certified: c.certified,
                     }));
                     roots.push((c.clone(), root));
-                    prev = Some((c, false));
+                    prev = Some((c, Point::Contact));
                 }
                 Break::Gap(lo, hi, why) => {
                     items.push(Item::Gap(Gap {
@@ -184,14 +222,14 @@ pub(crate) fn assemble<O: Oracle>(
                         reason: why.to_string(),
                         witness: None,
                     }));
-                    prev = Some((Instant::exact(hi), true));
+                    prev = Some((Instant::exact(hi), Point::Gap));
                 }
             }
         }
         let reached_end = !opts.first_contact_only || !found_any;
-        if let (Some((p, p_gap)), true) = (prev, reached_end) {
-            let end = Instant::exact(d1.clone());
-            if between(&p, p_gap, &end, false) {
+        if let (Some(p), true) = (prev, reached_end) {
+            let end = (Instant::exact(d1.clone()), Point::End);
+            if between(&p, &end) {
                 items.push(Item::Segment(piece(o, p, end)?));
             }
         }
@@ -213,7 +251,7 @@ pub(crate) fn assemble<O: Oracle>(
     } else {
         Vec::new()
     };
-    let mut outcome = verdicts(o, merged, stop_early, opts.first_contact_only && found_any);
+    let mut outcome = verdicts(o, merged, stop_early, opts.first_contact_only && at_contact);
     outcome.geometry = geometry;
     Ok(outcome)
 }

@@ -146,41 +146,53 @@ pub trait Signs {
 pub fn possible_with(signs: &mut dyn Signs, zero: &[Quantity], touch_only: bool) -> Possible {
     /// The walk reached `Var` in a touch-only decision.
     struct AtVar;
-    let mut asked: Vec<(Quantity, Vec<i32>)> = Vec::new();
+    /// A path: the answers given so far, in the order asked (a decision
+    /// asks at most five questions).
+    type Answers = ([i8; 6], usize);
+    // The values each quantity may take, asked once: bit `v + 1` for a sign
+    // `v`, bit `v` for `Var = v`.
+    let mut asked: [Option<u8>; 6] = [None; 6];
     let mut out = Possible::default();
-    // Each path is the answers given so far, in the order asked; the walk
-    // replays a path and branches at its first new question.
-    let mut paths: Vec<Vec<i32>> = vec![Vec::new()];
-    while let Some(mut path) = paths.pop() {
+    // Branches left to walk (allocated only when a set has several values).
+    let mut pending: Vec<Answers> = Vec::new();
+    let mut path: Answers = ([0; 6], 0);
+    loop {
         let mut depth = 0;
         let answer = classify_with(|q| {
-            let values = match asked.iter().find(|(x, _)| *x == q) {
-                Some((_, v)) => v.clone(),
-                None => {
-                    let v: Vec<i32> = if zero.contains(&q) {
-                        vec![0]
-                    } else if q == Quantity::Var {
-                        if touch_only {
-                            return Err(AtVar);
-                        }
-                        signs.variations().values().collect()
-                    } else {
-                        signs.sign(q).values().collect()
-                    };
-                    asked.push((q, v.clone()));
-                    v
-                }
+            let slot = match q {
+                Quantity::Sr22 => 0,
+                Quantity::Sr20 => 1,
+                Quantity::Sr11 => 2,
+                Quantity::Sr10 => 3,
+                Quantity::Sr0 => 4,
+                Quantity::Var => 5,
             };
-            if depth == path.len() {
-                for alt in values.iter().skip(1) {
-                    let mut branch = path.clone();
-                    branch.push(*alt);
-                    paths.push(branch);
+            let (bits, offset) = if q == Quantity::Var {
+                if touch_only {
+                    return Err(AtVar);
                 }
-                path.push(values.first().copied().unwrap_or(0));
+                (*asked[slot].get_or_insert_with(|| signs.variations().0), 0)
+            } else if zero.contains(&q) {
+                (SignSet::ZERO, 1)
+            } else {
+                (*asked[slot].get_or_insert_with(|| signs.sign(q).0), 1)
+            };
+            if depth == path.1 {
+                let mut values = (0..8i8)
+                    .filter(|v| bits & (1 << v) != 0)
+                    .map(|v| v - offset);
+                let first = values.next().unwrap_or(0);
+                for alt in values {
+                    let mut branch = path;
+                    branch.0[branch.1] = alt;
+                    branch.1 += 1;
+                    pending.push(branch);
+                }
+                path.0[path.1] = first;
+                path.1 += 1;
             }
             depth += 1;
-            Ok(path[depth - 1])
+            Ok(i32::from(path.0[depth - 1]))
         });
         match answer {
             Ok(c) => out.insert(c),
@@ -189,8 +201,11 @@ pub fn possible_with(signs: &mut dyn Signs, zero: &[Quantity], touch_only: bool)
                 out.insert(Configuration::Overlap);
             }
         }
+        match pending.pop() {
+            Some(p) => path = p,
+            None => return out,
+        }
     }
-    out
 }
 
 #[cfg(test)]

@@ -98,6 +98,10 @@ pub trait Oracle {
     /// Precision levels a decision escalates through while undecided
     /// ([`Oracle::signs`]); 1 when signs are final.
     const LEVELS: usize = 1;
+    /// Whether a piece between contacts may be read at an end of its
+    /// closure that is not a root (exact signs decide any non-root; an
+    /// enclosure next to a root does not).
+    const SAMPLE_AT_ENDS: bool = false;
 
     /// The parameter interval `[lo, hi]` of the span.
     fn domain(&self) -> &[Rat; 2];

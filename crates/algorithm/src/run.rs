@@ -175,7 +175,7 @@ fn walk_candidates<O: Oracle>(
 /// Runs Algorithm 1 of the paper on the arithmetic `o`.
 ///
 /// 1. The state at `t0`; a first-contact query that is not separate there
-///    stops (before any set-up).
+///    stops (before any set-up, [`Oracle::prepare`]).
 /// 2. The branch: `sr0 ≢ 0` — the candidates are the roots of `sr0`
 ///    (Theorem 5.2); `sr0 ≡ 0`, `sr11 ≢ 0` — touching at a non-root `δ` of
 ///    `sr11` means touching throughout (Theorem 5.5), otherwise the
@@ -197,12 +197,21 @@ pub fn run<O: Oracle>(mut o: O, opts: &Options) -> Result<Outcome, CcdError> {
         path: O::PATH,
         ..Stats::default()
     };
-    let state0 = state_at(&o, &o.domain()[0].clone());
+    // A first-contact query reads the state at t0 before any set-up, to
+    // stop there when the bodies are not separate; a full query sets up
+    // first (the exact arithmetic then reads t0 off f(λ; t)).
+    let t0 = o.domain()[0].clone();
+    if !opts.first_contact_only {
+        o.prepare()?;
+    }
+    let state0 = state_at(&o, &t0);
     let stop_early = opts.first_contact_only && state0.state != State::Separate;
     let mut walk = Walk::default();
     let mut throughout = None;
     if !stop_early {
-        o.prepare()?;
+        if opts.first_contact_only {
+            o.prepare()?;
+        }
         match plan(&mut o, state0, &mut stats) {
             Plan::Throughout(d) => throughout = Some(d),
             Plan::Undecided(why) => {

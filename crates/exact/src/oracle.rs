@@ -220,6 +220,7 @@ fn stream<M: ccd_solver::SignModel + Clone>(
 impl Oracle for Exact<'_> {
     type Root = ExactRoot;
     const PATH: Path = Path::Exact;
+    const SAMPLE_AT_ENDS: bool = true;
 
     fn domain(&self) -> &[Rat; 2] {
         &self.unit

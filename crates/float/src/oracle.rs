@@ -127,6 +127,7 @@ impl<'p> Float<'p> {
 impl Oracle for Float<'_> {
     type Root = Candidate;
     const PATH: Path = Path::Float;
+    const SAMPLE_AT_ENDS: bool = true;
 
     fn domain(&self) -> &[Rat; 2] {
         &self.unit
