@@ -149,22 +149,28 @@ fn digits_for(width: &Rat) -> u32 {
     }
 }
 
-/// `[lo, hi]` of an instant as outward-rounded decimals.
-pub(crate) fn enclosure_text(i: &Instant) -> String {
-    if i.lo == i.hi {
-        let exact = i.lo.to_string();
-        return if exact.len() <= 40 {
-            format!("exactly {exact}")
-        } else {
-            format!("exactly ≈ {}", i.lo.to_decimal(20))
-        };
+/// The ends of an instant's enclosure as outward-rounded decimals (the
+/// exact rational when it is short).
+fn enclosure_ends(i: &Instant) -> (String, String) {
+    let short = |x: &Rat| {
+        let exact = x.to_string();
+        (exact.len() <= 24).then_some(exact)
+    };
+    if let (Some(lo), Some(hi)) = (short(&i.lo), short(&i.hi)) {
+        return (lo, hi);
     }
     let d = digits_for(&i.width());
-    format!(
-        "[{}, {}]",
-        outward(&i.lo, d, false),
-        outward(&i.hi, d, true)
-    )
+    (outward(&i.lo, d, false), outward(&i.hi, d, true))
+}
+
+/// `[lo, hi]` of an instant as outward-rounded decimals.
+pub(crate) fn enclosure_text(i: &Instant) -> String {
+    let (lo, hi) = enclosure_ends(i);
+    if lo == hi {
+        format!("exactly {lo}")
+    } else {
+        format!("[{lo}, {hi}]")
+    }
 }
 
 /// Maps times of the span to x on the strip, exactly up to the final `f64`.
@@ -394,10 +400,10 @@ fn panel(
             hi[d] = hi[d].max(e.center[d] + h[d]);
         }
     }
-    let inner = PANEL - 60.0;
+    let inner = 230.0;
     let scale = inner / (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-300);
     let mid = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
-    let (px, py) = (at[0] + PANEL / 2.0, at[1] + 50.0 + (PANEL - 20.0) / 2.0);
+    let (px, py) = (at[0] + PANEL / 2.0, at[1] + 196.0);
     let screen = |p: [f64; 2]| [px + scale * (p[0] - mid[0]), py - scale * (p[1] - mid[1])];
     let names = ["x", "y", "z"];
     let _ = writeln!(
@@ -408,25 +414,34 @@ fn panel(
         at[1],
         PANEL + 40.0
     );
+    let (lo, hi) = enclosure_ends(c);
+    let lines = [
+        format!("lo = {lo}"),
+        format!("hi = {hi}"),
+        format!(
+            "plane {} = {:.6} through the point",
+            names[plane.k], plane.level
+        ),
+        note,
+    ];
     let _ = writeln!(
         out,
-        r#"<text x="{}" y="{}" font-size="12" font-weight="bold">contact t{} ≈ {}{}</text><text x="{}" y="{}" font-size="10">t ∈ {}</text><text x="{}" y="{}" font-size="10">plane {} = {:.6} through the point</text><text x="{}" y="{}" font-size="10">{}</text>"#,
+        r#"<text x="{}" y="{}" font-size="12" font-weight="bold">contact t{} ≈ {}{}</text>"#,
         at[0] + 6.0,
         at[1] + 14.0,
         k + 1,
         c.approx(12),
         if c.certified { "" } else { " (NOT certified)" },
-        at[0] + 6.0,
-        at[1] + 26.0,
-        escape(&enclosure_text(c)),
-        at[0] + 6.0,
-        at[1] + 38.0,
-        names[plane.k],
-        plane.level,
-        at[0] + 6.0,
-        at[1] + 50.0,
-        escape(&note)
     );
+    for (n, line) in lines.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            r#"<text x="{}" y="{}" font-size="10">{}</text>"#,
+            at[0] + 6.0,
+            at[1] + 27.0 + 12.0 * n as f64,
+            escape(line)
+        );
+    }
     let draw = |out: &mut String, e: &Ellipse, style: &str| {
         let (ra, rb, angle) = e.axes();
         let [cx, cy] = screen(e.center);
