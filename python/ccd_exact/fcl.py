@@ -227,7 +227,7 @@ class ContinuousCollisionRequest:
         toc_err: float = 0.0001,
         ccd_motion_type: int = CCDMotionType.CCDM_TRANS,
         gjk_solver_type: int = GJKSolverType.GST_LIBCCD,
-        ccd_solver_type: int = CCDSolverType.CCDC_NAIVE,
+        ccd_solver_type: int = CCDSolverType.CCDC_CONSERVATIVE_ADVANCEMENT,
     ) -> None:
         self.num_max_iterations = num_max_iterations
         self.toc_err = toc_err
