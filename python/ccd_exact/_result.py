@@ -128,15 +128,30 @@ class Result:
         stats: the engine's counters (a dict).
     """
 
+    _FIELDS = frozenset(
+        ("span", "collision_free", "collision_free_reason", "contacts", "first_contact",
+         "timeline", "gaps", "complete", "certified", "stats")
+    )
+
     def __init__(self, query: Any, scene_toml: str, options: Dict[str, Any]) -> None:
         self._query = query
         self._scene_toml = scene_toml
         self._options = dict(options)
-        self._read(query.json())
 
-    def _read(self, text: str) -> None:
-        self._json = text
-        d = json.loads(text)
+    def __getattr__(self, name: str) -> Any:
+        # The JSON is written, and the fields read from it, on first use: a
+        # caller that only wants to_json() (a batch, a Dask worker) pays
+        # nothing for the fields, one that only draws nothing for either.
+        if name == "_json":
+            self._json = self._query.json()
+            return self._json
+        if name in Result._FIELDS:
+            self._read()
+            return self.__dict__[name]
+        raise AttributeError(name)
+
+    def _read(self) -> None:
+        d = json.loads(self._json)
         self.span: Tuple[Fraction, Fraction] = (Fraction(d["span"][0]), Fraction(d["span"][1]))
         self.collision_free: Optional[bool] = d["collision_free"]
         self.collision_free_reason: Optional[str] = d["collision_free_reason"]
@@ -249,5 +264,5 @@ def _unpickle(text: str, scene_toml: str, options: Dict[str, Any]) -> Result:
     r._query = None
     r._scene_toml = scene_toml
     r._options = dict(options)
-    r._read(text)
+    r._json = text
     return r
