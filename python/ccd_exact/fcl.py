@@ -36,8 +36,9 @@ rational quaternion in general, so it is refused rather than rounded.
 The request's solver settings (``num_max_iterations``, ``gjk_solver_type``,
 ``ccd_solver_type``) are accepted and ignored: the answer is exact.
 ``time_of_contact`` is the largest float not above the certified lower end
-of the first contact (never late), ``1.0`` when the bodies stay separate,
-and the full answer is ``result.details`` (a ``ccd_exact.Result``).
+of the first contact (never late), the start of the first undecided piece
+when there is no proven contact before it, ``1.0`` when the bodies stay
+separate, and the full answer is ``result.details`` (a ``ccd_exact.Result``).
 """
 
 from __future__ import annotations
@@ -239,7 +240,13 @@ class ContinuousCollisionRequest:
 class ContinuousCollisionResult:
     """python-fcl's result: ``is_collide`` and ``time_of_contact`` (a float in
     ``[0, 1]``), plus ``details``, the full ``ccd_exact.Result`` (exact
-    enclosure of the first contact, timeline, contact point and normal)."""
+    enclosure of the first contact, timeline, contact point and normal).
+
+    ``is_collide`` is ``False`` only when separation over the step is
+    proven; on a helical (screw) step left undecided within the effort
+    budget it is ``True`` (the safe answer for a motion planner), with
+    ``details.collision_free`` ``None`` and the reason in
+    ``details.collision_free_reason``."""
 
     def __init__(self, is_collide: bool = False, time_of_contact: float = 1.0) -> None:
         self.is_collide = is_collide
