@@ -1,6 +1,7 @@
-//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--no-geometry]`
+//! `ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--no-geometry]
+//! [--svg FILE] [--html FILE]`
 
-use ccd_exact::{run_toml, to_json, Arithmetic, Geometry, Options, Outcome};
+use ccd_exact::{run, to_json, Arithmetic, Geometry, Options, Outcome, Scene};
 use ccd_scene::{Limit, SceneError, MAX_INPUT_BYTES};
 use std::io::Write;
 use std::process::ExitCode;
@@ -10,7 +11,7 @@ ccd-exact: exact, certified continuous collision detection for two moving ellips
 
 USAGE:
     ccd-exact SCENE.toml [--json] [--digits N] [--first-contact] [--arithmetic exact|float]
-              [--no-geometry]
+              [--no-geometry] [--svg FILE] [--html FILE]
 
 OPTIONS:
     --json            print the result as JSON (scene-format.md, format 1)
@@ -19,6 +20,10 @@ OPTIONS:
     --arithmetic M    exact (default: every answer certified) or float (the
                       paper's f64 Bernstein solver: faster, NOT certified)
     --no-geometry     skip the contact point and normal of each contact
+    --svg FILE        also draw the query as an SVG picture: the timeline strip
+                      and each contact's section through its point
+    --html FILE       also write a self-contained HTML page that animates the
+                      two bodies over the span (time slider, contacts marked)
     -h, --help        this help
     -V, --version     the version
 
@@ -26,6 +31,7 @@ EXAMPLES:
     ccd-exact tests/scenes/paper-example-5-1.toml
     ccd-exact tests/scenes/rigid-tumbling.toml --json --digits 30
     ccd-exact tests/scenes/paper-example-5-1.toml --first-contact
+    ccd-exact tests/scenes/paper-example-5-1.toml --svg 5-1.svg --html 5-1.html
     ccd-exact benches/scenes/affine-deg2.toml --arithmetic float
 
 Exit status: 0 on success, 2 on bad input (the message names the field).";
@@ -34,12 +40,42 @@ struct Args {
     path: String,
     json: bool,
     options: Options,
+    /// Where to write the pictures (`--svg`, `--html`), if asked.
+    pictures: Pictures,
+}
+
+/// Draws a query: `ccd_picture::svg` or `ccd_picture::html`.
+type Picture = fn(&Scene, &Outcome, &str) -> String;
+
+/// The files `--svg` and `--html` name.
+#[derive(Default)]
+struct Pictures {
+    svg: Option<String>,
+    html: Option<String>,
+}
+
+impl Pictures {
+    /// Writes the pictures asked for; the error names the file.
+    fn write(&self, title: &str, scene: &Scene, out: &Outcome) -> Result<(), String> {
+        let draw: [(&Option<String>, Picture); 2] = [
+            (&self.svg, ccd_picture::svg),
+            (&self.html, ccd_picture::html),
+        ];
+        for (file, picture) in draw {
+            if let Some(file) = file {
+                std::fs::write(file, picture(scene, out, title))
+                    .map_err(|e| format!("cannot write `{file}`: {e}"))?;
+            }
+        }
+        Ok(())
+    }
 }
 
 fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, String> {
     let mut path = None;
     let mut json = false;
     let mut options = Options::default();
+    let mut pictures = Pictures::default();
     while let Some(a) = args.next() {
         match a.as_str() {
             "-h" | "--help" => return Ok(None),
@@ -54,6 +90,17 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
             "--json" => json = true,
             "--first-contact" => options.first_contact_only = true,
             "--no-geometry" => options.contact_geometry = false,
+            "--svg" | "--html" => {
+                let file = args
+                    .next()
+                    .ok_or(format!("option `{a}` needs a file name"))?;
+                let slot = if a == "--svg" {
+                    &mut pictures.svg
+                } else {
+                    &mut pictures.html
+                };
+                *slot = Some(file);
+            }
             "--arithmetic" => {
                 options.arithmetic = match args.next().as_deref() {
                     Some("exact") => Arithmetic::Exact,
@@ -92,6 +139,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Option<Args>, St
         path,
         json,
         options,
+        pictures,
     }))
 }
 
@@ -286,8 +334,15 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    match run_toml(&text, &args.options) {
-        Ok(out) => {
+    let result = Scene::from_toml(&text)
+        .map_err(ccd_exact::CcdError::from)
+        .and_then(|scene| Ok((run(&scene, &args.options)?, scene)));
+    match result {
+        Ok((out, scene)) => {
+            if let Err(e) = args.pictures.write(&args.path, &scene, &out) {
+                eprintln!("ccd-exact: {e}");
+                return ExitCode::from(1);
+            }
             let text = if args.json {
                 serde_json::to_string_pretty(&to_json(&out)).unwrap_or_default() + "\n"
             } else {

@@ -1,0 +1,159 @@
+"""ccd_exact: exact, certified continuous collision detection for moving
+ellipsoids (after Jia, Choi, Mourrain & Wang, CAGD 2011), from Python.
+
+Build two moving ellipsoids and ask when they touch::
+
+    >>> import ccd_exact as ccd
+    >>> a = ccd.Ellipsoid([2, 1, 1], ccd.Translation([[11, 0, 0], [-1, 0, 0]]))
+    >>> b = ccd.Ellipsoid([2, 1, 1], ccd.Translation([[3, -2, -4], [3, 2, 0]]))
+    >>> r = ccd.collide(a, b)                     # the paper's Example 5.1
+    >>> [s.state for s in r.timeline]
+    ['separate', 'touch', 'overlap', 'touch', 'separate']
+    >>> t1 = r.contacts[0]                        # lo, hi: exact Fractions
+    >>> t1.lo <= ccd.Fraction(5395042868, 10**10) <= t1.hi + ccd.Fraction(1, 10**10)
+    True
+
+Numbers are exact: ``int``, ``Fraction``, ``Decimal``, strings such as
+``"1/3"`` or ``"1e-20"``, and ``float`` taken as its exact binary value
+(``0.1`` is 3602879701896397/36028797018963968; write ``"0.1"`` for 1/10).
+Control points may be lists or numpy arrays. Every scene goes to the engine
+as a scene file's text (``Scene(a, b).to_toml()``), so ``ccd-exact FILE``
+gives the same answer, and a bad scene raises ``SceneError`` (a
+``ValueError``) naming the field, e.g. ``a.radii[0]``.
+
+``from ccd_exact import fcl`` is a python-fcl-shaped entry
+(``continuousCollide`` over ``Ellipsoid``, ``Transform``,
+``CollisionObject``).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any, Iterable, List, Optional, Sequence, Union
+
+from . import _native
+from ._errors import EffortError, SceneError
+from ._result import Box, Contact, Gap, Result, Segment, Time
+from ._scene import (
+    Affine,
+    Ellipsoid,
+    Helical,
+    Motion,
+    Number,
+    Rigid,
+    Scene,
+    Static,
+    Translation,
+)
+
+__all__ = [
+    "Affine", "Box", "Contact", "EffortError", "Ellipsoid", "Fraction", "Gap",
+    "Helical", "Motion", "Number", "Result", "Rigid", "Scene", "SceneError",
+    "Segment", "Static", "Time", "Translation", "collide", "collide_json",
+    "collide_many", "collide_toml",
+]
+__version__: str = _native.__version__
+
+MAX_DIGITS = 1000
+"""The largest ``digits`` accepted (as the CLI's ``--digits``)."""
+
+
+def _options(first_contact: Any = False, digits: Any = 15, arithmetic: Any = "exact", geometry: Any = True) -> dict:
+    """The query options, checked; a bad one raises ``ValueError`` naming it."""
+    for name, value in (("first_contact", first_contact), ("geometry", geometry)):
+        if not isinstance(value, bool):
+            raise ValueError(f"option `{name}`: expected True or False, found {value!r}")
+    if isinstance(digits, bool) or not isinstance(digits, int) or not 0 <= digits <= MAX_DIGITS:
+        raise ValueError(f"option `digits`: expected a whole number from 0 to {MAX_DIGITS}, found {digits!r}")
+    if arithmetic not in ("exact", "float"):
+        raise ValueError(f'option `arithmetic`: expected "exact" or "float", found {arithmetic!r}')
+    return {"first_contact": first_contact, "digits": digits, "arithmetic": arithmetic, "geometry": geometry}
+
+
+def _scene(item: Any) -> Scene:
+    if isinstance(item, Scene):
+        return item
+    if isinstance(item, tuple) and len(item) in (2, 3):
+        return Scene(*item)
+    if isinstance(item, dict):
+        return Scene.from_dict(item)
+    raise SceneError(
+        f"expected a Scene, an (a, b) or (a, b, span) tuple, or a scene dict, found {type(item).__name__}"
+    )
+
+
+def collide(
+    a: Ellipsoid,
+    b: Ellipsoid,
+    span: Sequence[Number] = (0, 1),
+    first_contact: bool = False,
+    digits: int = 15,
+    arithmetic: str = "exact",
+    geometry: bool = True,
+) -> Result:
+    """When do the moving ellipsoids ``a`` and ``b`` touch or overlap over
+    ``span = (t0, t1)``?
+
+    Args:
+        a, b: the two ``Ellipsoid``s (their fields are named ``a.…``/``b.…``
+            in errors).
+        span: the time interval, ``t0 < t1``.
+        first_contact: stop at the earliest instant they are not separate.
+        digits: enclose each contact instant to ``10**-digits`` of the span.
+        arithmetic: ``"exact"`` (every answer certified) or ``"float"`` (the
+            paper's f64 solver: faster, NOT certified; rational motions only).
+        geometry: compute each contact's point and normal.
+
+    Returns:
+        a ``Result``; ``result.to_json()`` is what ``ccd-exact --json`` prints.
+
+    Raises:
+        SceneError: an invalid scene (``ValueError``; ``.field`` names it).
+        ValueError: an option out of range.
+        EffortError: the exact path's documented effort bound was reached.
+    """
+    return _run(Scene(a, b, span), _options(first_contact, digits, arithmetic, geometry))
+
+
+def collide_toml(text: str, **options: Any) -> Result:
+    """``collide`` on a scene file's text (TOML, docs/scene-format.md), with
+    the same keyword options as ``collide``."""
+    return _run(Scene.from_toml(text), _options(**options))
+
+
+def collide_json(scene: Union[str, bytes, dict], **options: Any) -> Result:
+    """``collide`` on a scene given as JSON text (e.g. one line of a JSON
+    Lines file) or a dict with the structure of a scene file:
+    ``{"span": [0, 1], "a": {"radii": [...], "motion": {...}}, "b": {...}}``.
+    Same keyword options as ``collide``."""
+    return _run(Scene.from_json(scene), _options(**options))
+
+
+def collide_many(
+    pairs: Iterable[Any], threads: Optional[int] = None, **options: Any
+) -> List[Result]:
+    """Answers many pair queries in parallel on ``threads`` threads (default:
+    one per core), with the GIL released; results in the order given.
+
+    Each item is a ``Scene``, an ``(a, b)`` or ``(a, b, span)`` tuple, or a
+    scene dict. Keyword options as ``collide``. The first invalid scene (in
+    order) raises, its index in the message (``pairs[3]: field …``).
+    (Worlds of many bodies are not reachable from Python yet.)
+    """
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int) or threads < 1):
+        raise ValueError(f"option `threads`: expected None or a whole number >= 1, found {threads!r}")
+    opts = _options(**options)
+    scenes = []
+    for i, item in enumerate(pairs):
+        try:
+            scenes.append(_scene(item))
+        except SceneError as e:
+            raise SceneError(f"pairs[{i}]: {e}", e.field) from None
+    texts = [s.to_toml() for s in scenes]
+    queries = _native.run_many(texts, threads=threads, **opts)
+    return [Result(q, t, opts) for q, t in zip(queries, texts)]
+
+
+def _run(scene: Scene, opts: dict) -> Result:
+    text = scene.to_toml()
+    return Result(_native.run_toml(text, **opts), text, opts)
