@@ -54,14 +54,7 @@ pub enum CcdError {
 impl CcdError {
     /// Attaches the body (`a` or `b`) and the field that a motion error is about.
     pub fn motion(body: &str, source: MotionError) -> CcdError {
-        let field = match source {
-            MotionError::QuaternionVanishes { .. } => "motion.orientation",
-            MotionError::SingularAffine { .. } => "motion.matrix",
-            MotionError::WeightVanishes { .. } | MotionError::MalformedCurve { .. } => {
-                "motion.weights"
-            }
-            MotionError::NotRational { .. } => "motion.kind",
-        };
+        let field = source.field();
         CcdError::Motion {
             field: format!("{body}.{field}"),
             source,

@@ -56,6 +56,7 @@ pub enum Case {
 
 /// Why no enclosure came out of one evaluation.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ContactError {
     /// A quantity that must be nonzero (a divisor, the sign of `λ*`, the
     /// radicand) was not separated from zero at this precision and width.

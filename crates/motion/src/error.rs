@@ -2,6 +2,7 @@
 
 /// A motion that does not define a valid moving ellipsoid over the span.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum MotionError {
     /// The quaternion curve is zero at some instant, so `R(q)` is undefined.
     #[error("the quaternion curve vanishes at t ≈ {at}")]
@@ -37,4 +38,19 @@ pub enum MotionError {
         /// The kind's name.
         kind: &'static str,
     },
+}
+
+impl MotionError {
+    /// The field of a body's table the error is about, e.g.
+    /// `motion.orientation`.
+    pub fn field(&self) -> &'static str {
+        match self {
+            MotionError::QuaternionVanishes { .. } => "motion.orientation",
+            MotionError::SingularAffine { .. } => "motion.matrix",
+            MotionError::WeightVanishes { .. } | MotionError::MalformedCurve { .. } => {
+                "motion.weights"
+            }
+            MotionError::NotRational { .. } => "motion.kind",
+        }
+    }
 }

@@ -81,6 +81,7 @@ impl fmt::Display for Limit {
 /// `span`, `b.motion.kind` (see [`SceneError::field`]), and its message starts
 /// with ``field `…`: ``. Keys that are not bare TOML keys are quoted in paths.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum SceneError {
     /// The text is not valid TOML (1-based line and column, in characters).
     #[error("not TOML (line {line}, column {column}): {message}")]

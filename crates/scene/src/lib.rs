@@ -73,6 +73,10 @@ impl Scene {
     /// the types and lengths of all values, every number's exactness, and
     /// then everything [`Scene::validate`] checks. Input longer than
     /// [`MAX_INPUT_BYTES`] is refused unread. Never panics.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError`] naming the offending field ([`SceneError::field`]).
     pub fn from_toml(text: &str) -> Result<Scene, SceneError> {
         parse::parse_scene(text)
     }
@@ -88,6 +92,10 @@ impl Scene {
     /// `ccd-motion`): a rigid quaternion curve or an affine `L(t)` that
     /// vanishes or is singular somewhere on the span. A single zero control
     /// quaternion of a rigid curve is accepted.
+    ///
+    /// # Errors
+    ///
+    /// A [`SceneError`] naming the first offending field.
     pub fn validate(&self) -> Result<(), SceneError> {
         validate::validate(self)
     }

@@ -33,6 +33,7 @@ use ccd_poly::ZPoly;
 
 /// Why a polynomial's roots cannot be listed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum SolverError {
     /// The zero polynomial vanishes everywhere: its roots are not isolated.
     #[error("the polynomial is identically zero")]

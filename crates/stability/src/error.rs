@@ -3,6 +3,7 @@
 /// Everything that can go wrong while generating, reading, running or
 /// reporting the stability families.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum StabilityError {
     /// Reading or writing a file.
     #[error("{path}: {source}")]

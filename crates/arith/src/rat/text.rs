@@ -7,6 +7,7 @@ use crate::Int;
 
 /// Why a decimal or fraction text is not an exact rational.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum ParseRatError {
     /// The text is empty.
     #[error("empty number")]
