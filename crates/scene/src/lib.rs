@@ -201,8 +201,9 @@ impl World {
 /// file keeps its format-1 meaning.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SceneFile {
-    /// Two bodies `a` and `b`.
-    Pair(Scene),
+    /// Two bodies `a` and `b` (boxed: a scene is large beside a world's
+    /// vector).
+    Pair(Box<Scene>),
     /// Any number of named bodies.
     World(World),
 }

@@ -58,7 +58,7 @@ fn file(root: &Table<'_>) -> Result<SceneFile> {
     if root.get("body").is_some() {
         world(root).map(SceneFile::World)
     } else {
-        pair(root).map(SceneFile::Pair)
+        pair(root).map(|s| SceneFile::Pair(Box::new(s)))
     }
 }
 

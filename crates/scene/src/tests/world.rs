@@ -74,7 +74,7 @@ fn a_world_file_has_named_bodies_in_file_order() {
 fn every_pair_file_stays_a_pair_file() {
     for (name, text) in SHIPPED {
         match SceneFile::from_toml(text) {
-            Ok(SceneFile::Pair(s)) => assert_eq!(s, Scene::from_toml(text).unwrap(), "{name}"),
+            Ok(SceneFile::Pair(s)) => assert_eq!(*s, Scene::from_toml(text).unwrap(), "{name}"),
             other => panic!("{name}: {other:?}"),
         }
     }
