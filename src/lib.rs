@@ -33,16 +33,22 @@
 #![warn(missing_docs)]
 
 mod algorithm;
+mod batch;
 mod error;
 mod geometry;
 mod json;
 mod signs;
+mod world;
 
 pub use algorithm::{symbolic, Arithmetic, Options};
-pub use ccd_scene::{Scene, SceneError};
+pub use batch::{batch_line, run_batch, BatchError, BatchOptions, BatchSummary};
+pub use ccd_scene::{Scene, SceneError, SceneFile, World};
 pub use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome, Segment, State, Stats, Witness};
 pub use error::CcdError;
-pub use json::to_json;
+pub use json::{to_json, world_to_json};
+pub use world::{
+    run_world, BroadStats, PairResult, WorldContact, WorldOutcome, MAX_CANDIDATE_PAIRS,
+};
 
 /// Runs continuous collision detection on a scene (Algorithm 1).
 pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {

@@ -18,10 +18,14 @@ type Result<T> = std::result::Result<T, SceneError>;
 
 /// Parses `text` as JSON whose top level is an object, as a TOML table.
 pub(crate) fn to_table(text: &str) -> Result<Table> {
-    let json: Json = serde_json::from_str(text).map_err(|e| SceneError::NotJson {
-        line: e.line(),
-        column: e.column(),
-        message: e.to_string(),
+    let json: Json = serde_json::from_str(text).map_err(|e| {
+        let at = format!(" at line {} column {}", e.line(), e.column());
+        let message = e.to_string();
+        SceneError::NotJson {
+            line: e.line(),
+            column: e.column(),
+            message: message.strip_suffix(&at).unwrap_or(&message).to_string(),
+        }
     })?;
     let Json::Object(map) = json else {
         return Err(SceneError::WrongType {
