@@ -121,7 +121,8 @@ pub fn to_json(outcome: &Outcome) -> Value {
 /// names in file order), `undecided`, `first_contact` (a time with
 /// `"pair": [a, b]`, or `null`), `pairs` (each queried candidate pair: `a`,
 /// `b` and the pair result object, or `error`), `broad_phase`
-/// (`candidates`, `pruned`, `slices`), `complete` and `certified`.
+/// (`candidates`, `pruned`, `box_overlaps`, `slices`), `complete` and
+/// `certified`.
 pub fn world_to_json(world: &WorldOutcome) -> Value {
     let d = approx_digits(&world.span);
     let name = |i: usize| Value::from(world.bodies[i].as_str());
@@ -167,6 +168,7 @@ pub fn world_to_json(world: &WorldOutcome) -> Value {
         "broad_phase": {
             "candidates": world.broad_phase.candidates,
             "pruned": world.broad_phase.pruned,
+            "box_overlaps": world.broad_phase.box_overlaps,
             "slices": world.broad_phase.slices,
         },
         "complete": world.complete,

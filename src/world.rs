@@ -63,9 +63,12 @@ pub struct BroadStats {
     /// Pairs sent to the exact query (or, in first-contact mode, that
     /// might have been).
     pub candidates: usize,
-    /// Pairs **proven separate** throughout by disjoint certified boxes in
-    /// every slice; never queried.
+    /// Pairs **proven separate** throughout: in every slice disjoint
+    /// certified boxes or a separating plane; never queried.
     pub pruned: u64,
+    /// Pairs whose boxes overlap in some slice (what boxes alone would
+    /// have sent to the exact query).
+    pub box_overlaps: usize,
     /// The number of slices of the span the boxes are over.
     pub slices: usize,
     /// Wall time of the boxes and the sweep, in seconds.
@@ -142,10 +145,15 @@ pub fn run_world(world: &World, options: &Options) -> Result<WorldOutcome, CcdEr
         .par_iter()
         .map(|b| sweep(&b.body, &world.span, DEFAULT_DEPTH))
         .collect();
-    let BroadPhase { candidates, pruned } = broad_phase(&boxes, MAX_CANDIDATE_PAIRS)?;
+    let BroadPhase {
+        candidates,
+        pruned,
+        box_overlaps,
+    } = broad_phase(&boxes, MAX_CANDIDATE_PAIRS)?;
     let broad = BroadStats {
         candidates: candidates.len(),
         pruned,
+        box_overlaps,
         slices: 1 << DEFAULT_DEPTH,
         seconds: clock.elapsed().as_secs_f64(),
     };

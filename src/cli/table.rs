@@ -158,13 +158,14 @@ pub fn world(w: &WorldOutcome, options: &Options) -> String {
     let b = &w.broad_phase;
     let _ = writeln!(
         t,
-        "world: {n} bodies over span [{}, {}]\nbroad phase: {} pairs, {} candidate(s), {} proven separate by certified boxes ({} slices of the span)\n",
+        "world: {n} bodies over span [{}, {}]\nbroad phase: {} pairs, {} candidate(s), {} proven separate by certified boxes and separating planes ({} slices of the span; boxes alone: {} candidates)\n",
         w.span[0],
         w.span[1],
         n * n.saturating_sub(1) / 2,
         b.candidates,
         b.pruned,
-        b.slices
+        b.slices,
+        b.box_overlaps
     );
     let name = |i: usize| w.bodies[i].as_str();
     let colliding: Vec<_> = w.pairs.iter().filter(|p| p.colliding()).collect();

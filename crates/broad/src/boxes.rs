@@ -53,10 +53,163 @@ impl Aabb {
 /// A control point in homogeneous coordinates, `[w·P, w]`.
 type Point<const K: usize> = [Interval; K];
 
-/// The boxes of `body` over the `2^depth` equal slices `[t_k, t_{k+1}]`,
-/// `t_k = t0 + k·(t1 − t0)/2^depth`, of `span` (`depth` is clamped to
-/// [`MAX_DEPTH`]): box `k` provably holds the body at every `t` of slice
-/// `k`.
+/// An interval 3×3 matrix.
+type Mat3 = [[Interval; 3]; 3];
+
+/// How a body's points lie around its centre over one slice: `X = c + M·Y`
+/// for some `|Y| <= 1` with `M` in the interval matrix (`M = R·diag(r)`),
+/// or `|X − c| <= r` (a ball, for a body spinning in unknown ways).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Shape {
+    /// `M` and `max r` (which bounds `‖M·Y‖` too).
+    Matrix(Mat3, f64),
+    Ball(f64),
+}
+
+/// The shapes of a body over the slices.
+#[derive(Clone, Debug, PartialEq)]
+enum Shapes {
+    /// One shape throughout (a fixed orientation).
+    Fixed(Shape),
+    /// One per slice.
+    PerSlice(Vec<Shape>),
+    /// Not of the form `c + M·Y` (affine): boxes only.
+    Unknown,
+}
+
+/// A body over the slices of the span: a certified box per slice (what
+/// sweep-and-prune uses), and where available the centre box and the shape
+/// around it, for the finer separating-plane test ([`Swept::apart`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Swept {
+    /// Box `k` holds the body at every instant of slice `k`.
+    pub boxes: Vec<Aabb>,
+    /// The centre's box per slice (empty when the shapes are unknown).
+    centres: Vec<[Interval; 3]>,
+    shapes: Shapes,
+}
+
+impl Swept {
+    /// The number of slices.
+    pub fn slices(&self) -> usize {
+        self.boxes.len()
+    }
+
+    /// `true` when bodies `self` and `o` are **proven** disjoint at every
+    /// instant of slice `k`: their boxes are disjoint, or a plane separates
+    /// them. The plane's normal `n` is the difference of the centre boxes'
+    /// middles (any `n` is sound; this one usually works): with
+    /// `h(n) = ‖Mᵀn‖` the body's support around its centre (`r·‖n‖` for a
+    /// ball), every point `X` of `self` has `n·X <= n·c + h(n)` and every
+    /// point `Y` of `o` has `n·Y >= n·c' − h'(n)`, so
+    /// `n·(c' − c) > h(n) + h'(n)` over the slice's centre boxes (in
+    /// outward-rounded intervals) puts the bodies strictly on the two sides
+    /// of a plane. Bodies that touch share a point, so they are never
+    /// `apart`.
+    pub fn apart(&self, o: &Swept, k: usize) -> bool {
+        if !self.boxes[k].overlaps(&o.boxes[k]) {
+            return true;
+        }
+        match (self.centres.get(k), o.centres.get(k), self.shape(k), o.shape(k)) {
+            (Some(ca), Some(cb), Some(sa), Some(sb)) => plane(ca, &sa, cb, &sb),
+            _ => false,
+        }
+    }
+
+    /// `true` when a plane separates the bodies over the whole span (the
+    /// test of [`Swept::apart`] on the hull of the centre boxes and the
+    /// hull of the shapes): one test instead of one per slice.
+    pub fn apart_throughout(&self, o: &Swept) -> bool {
+        match (self.whole(), o.whole()) {
+            (Some((ca, sa)), Some((cb, sb))) => plane(&ca, &sa, &cb, &sb),
+            _ => false,
+        }
+    }
+
+    /// The hull of the centre boxes and of the shapes over all slices.
+    fn whole(&self) -> Option<([Interval; 3], Shape)> {
+        let c = hull(self.centres.iter().copied());
+        let s = match &self.shapes {
+            Shapes::Fixed(s) => *s,
+            Shapes::PerSlice(v) => v.iter().skip(1).fold(*v.first()?, |a, b| a.hull(b)),
+            Shapes::Unknown => return None,
+        };
+        (!self.centres.is_empty()).then_some((c, s))
+    }
+}
+
+impl Shape {
+    /// A shape holding both.
+    fn hull(&self, o: &Shape) -> Shape {
+        match (self, o) {
+            (Shape::Matrix(m, r), Shape::Matrix(n, s)) => Shape::Matrix(
+                std::array::from_fn(|k| std::array::from_fn(|j| m[k][j].hull(&n[k][j]))),
+                r.max(*s),
+            ),
+            (Shape::Matrix(_, r) | Shape::Ball(r), Shape::Matrix(_, s) | Shape::Ball(s)) => {
+                Shape::Ball(r.max(*s))
+            }
+        }
+    }
+}
+
+/// The separating-plane test of [`Swept::apart`] for centre boxes `ca`,
+/// `cb` and shapes `sa`, `sb`.
+fn plane(ca: &[Interval; 3], sa: &Shape, cb: &[Interval; 3], sb: &Shape) -> bool {
+    {
+        let n: [f64; 3] = std::array::from_fn(|i| cb[i].mid() - ca[i].mid());
+        if !n.iter().all(|x| x.is_finite()) || n.iter().all(|&x| x == 0.0) {
+            return false;
+        }
+        let n = n.map(Interval::point);
+        let gap = (0..3)
+            .map(|i| n[i] * (cb[i] - ca[i]))
+            .fold(Interval::point(0.0), |s, x| s + x);
+        let reach = Interval::point(support(sa, &n)) + Interval::point(support(sb, &n));
+        gap.lo > reach.hi
+    }
+}
+
+impl Swept {
+    fn shape(&self, k: usize) -> Option<Shape> {
+        match &self.shapes {
+            Shapes::Fixed(s) => Some(*s),
+            Shapes::PerSlice(v) => v.get(k).copied(),
+            Shapes::Unknown => None,
+        }
+    }
+}
+
+/// An upper bound on `max_{|Y| <= 1} n·(M·Y) = ‖Mᵀn‖` (a ball: `r·‖n‖`).
+fn support(s: &Shape, n: &[Interval; 3]) -> f64 {
+    let norm = |v: [Interval; 3]| sqrt_up(v.iter().fold(Interval::point(0.0), |a, x| a + x.square()).hi);
+    let ball = |r: f64| (r * norm(*n)).next_up();
+    match s {
+        Shape::Ball(r) => ball(*r),
+        Shape::Matrix(m, r) => norm(std::array::from_fn(|j| {
+            (0..3).fold(Interval::point(0.0), |a, k| a + m[k][j] * n[k])
+        }))
+        .min(ball(*r)),
+    }
+}
+
+/// The shape `R·diag(r)` of a rotation in the interval matrix `rot` (a
+/// ball of radius `max r` when the rotation is unknown).
+fn shape(radii: &[Interval; 3], rot: Option<Mat3>) -> Shape {
+    let rmax = radii.iter().map(|r| r.hi).fold(0.0, f64::max);
+    match rot {
+        Some(r) => Shape::Matrix(
+            std::array::from_fn(|k| std::array::from_fn(|j| r[k][j] * radii[j])),
+            rmax,
+        ),
+        None => Shape::Ball(rmax),
+    }
+}
+
+/// The boxes (and centres and shapes) of `body` over the `2^depth` equal
+/// slices `[t_k, t_{k+1}]`, `t_k = t0 + k·(t1 − t0)/2^depth`, of `span`
+/// (`depth` is clamped to [`MAX_DEPTH`]): box `k` provably holds the body
+/// at every `t` of slice `k`.
 ///
 /// Per motion kind, with `D = diag(r)` and `|Y| <= 1` the unit ball:
 ///
@@ -80,57 +233,65 @@ type Point<const K: usize> = [Interval; K];
 /// All in outward-rounded interval arithmetic: a box is never smaller
 /// than the exact set. A body built in code with an empty curve or
 /// mismatched weights, or numbers beyond `f64`, gets [`Aabb::ENTIRE`].
-pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Vec<Aabb> {
+pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Swept {
     let depth = depth.min(MAX_DEPTH);
     let slices = 1usize << depth;
     let radii = body.radii.each_ref().map(Interval::from_rat);
-    let boxes = match &body.motion {
+    // Centre boxes and shapes; `None` centres (a malformed curve) give
+    // the whole space.
+    let from = |centres: Vec<Option<[Interval; 3]>>, shapes: Shapes| {
+        let boxes = centres
+            .iter()
+            .enumerate()
+            .map(|(k, c)| match (c, &shapes) {
+                (Some(c), Shapes::Fixed(s)) => place(*c, extent(s)),
+                (Some(c), Shapes::PerSlice(v)) => place(*c, extent(&v[k])),
+                _ => Aabb::ENTIRE,
+            })
+            .collect();
+        let centres = centres.into_iter().map(|c| c.unwrap_or([Interval::ENTIRE; 3])).collect();
+        Swept { boxes, centres, shapes }
+    };
+    let fixed = |q: &Quat| Shapes::Fixed(shape(&radii, rotation(point_quat(q))));
+    match &body.motion {
         Motion::Static {
             center,
             orientation,
-        } => {
-            let c = center.each_ref().map(Interval::from_rat);
-            vec![place(c, extent(&radii, rotation(point_quat(orientation)))); slices]
-        }
+        } => from(vec![Some(center.each_ref().map(Interval::from_rat)); slices], fixed(orientation)),
         Motion::Translation {
             center,
             orientation,
-        } => {
-            let e = extent(&radii, rotation(point_quat(orientation)));
-            centre_boxes(center, depth)
-                .into_iter()
-                .map(|c| c.map_or(Aabb::ENTIRE, |c| place(c, e)))
-                .collect()
-        }
+        } => from(centre_boxes(center, depth), fixed(orientation)),
         Motion::Rigid {
             orientation,
             center,
         } => {
             let q = homogeneous::<_, 4, 5>(orientation, |q| q.each_ref().map(Interval::from_rat));
-            let q = leaves(&q, depth);
-            centre_boxes(center, depth)
+            // R(q) is unchanged by scaling q, so the numerator Σ Bᵢ·wᵢ·qᵢ
+            // of a weighted curve gives the rotation too; the hull of its
+            // control points bounds it.
+            let shapes = leaves(&q, depth)
                 .into_iter()
-                .zip(q)
-                .map(|(c, q)| match (c, q) {
-                    (Some(c), Some(q)) => {
-                        // R(q) is unchanged by scaling q, so the numerator
-                        // Σ Bᵢ·wᵢ·qᵢ of a weighted curve gives the rotation
-                        // too; the hull of its control points bounds it.
-                        let qbox = hull(q.iter().map(|p| [p[0], p[1], p[2], p[3]]));
-                        place(c, extent(&radii, rotation(qbox)))
-                    }
-                    _ => Aabb::ENTIRE,
+                .map(|q| {
+                    let rot = q.and_then(|q| rotation(hull(q.iter().map(|p| [p[0], p[1], p[2], p[3]]))));
+                    shape(&radii, rot)
                 })
-                .collect()
+                .collect();
+            from(centre_boxes(center, depth), Shapes::PerSlice(shapes))
         }
         Motion::Affine { matrix } => {
             let h = homogeneous::<_, 12, 13>(matrix, |m| {
                 std::array::from_fn(|i| Interval::from_rat(&m[i / 4][i % 4]))
             });
-            leaves(&h, depth)
+            let boxes = leaves(&h, depth)
                 .into_iter()
                 .map(|leaf| leaf.map_or(Aabb::ENTIRE, |leaf| affine_box(&leaf, &radii)))
-                .collect()
+                .collect();
+            Swept {
+                boxes,
+                centres: Vec::new(),
+                shapes: Shapes::Unknown,
+            }
         }
         Motion::Helical {
             orientation,
@@ -138,22 +299,27 @@ pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Vec<Aabb> {
             center,
             ..
         } => {
-            let e = if rate.is_zero() {
-                extent(&radii, rotation(point_quat(orientation)))
-            } else {
-                extent(&radii, None)
-            };
-            (0..slices)
+            let shapes = if rate.is_zero() { fixed(orientation) } else { Shapes::Fixed(shape(&radii, None)) };
+            let centres = (0..slices)
                 .map(|k| {
                     let t = Interval::from_rat(&crate::slice_start(span, depth, k))
                         .hull(&Interval::from_rat(&crate::slice_start(span, depth, k + 1)));
-                    place(helical_centre(center, t), e)
+                    Some(helical_centre(center, t))
                 })
-                .collect()
+                .collect();
+            from(centres, shapes)
         }
-    };
-    debug_assert_eq!(boxes.len(), slices);
-    boxes
+    }
+}
+
+/// Upper bounds on the body's reach `‖row_k(M)‖` along each axis.
+fn extent(s: &Shape) -> [f64; 3] {
+    match s {
+        Shape::Ball(r) => [*r; 3],
+        Shape::Matrix(m, r) => m.map(|row| {
+            sqrt_up(row.iter().fold(Interval::point(0.0), |a, x| a + x.square()).hi).min(*r)
+        }),
+    }
 }
 
 /// `c ± e`, outward rounded.
@@ -170,23 +336,10 @@ fn sqrt_up(x: f64) -> f64 {
     }
 }
 
-/// Upper bounds on `‖row_k(R)·diag(r)‖`, `k = 0, 1, 2`, for a rotation in
-/// the interval matrix `rot` (any rotation when `None`): at most `max r`.
-fn extent(radii: &[Interval; 3], rot: Option<[[Interval; 3]; 3]>) -> [f64; 3] {
-    let rmax = radii.iter().map(|r| r.hi).fold(0.0, f64::max);
-    let Some(rot) = rot else { return [rmax; 3] };
-    rot.map(|row| {
-        let s = (0..3)
-            .map(|j| row[j].square() * radii[j].square())
-            .fold(Interval::point(0.0), |a, b| a + b);
-        sqrt_up(s.hi).min(rmax)
-    })
-}
-
 /// `R(q) = M(q)/|q|²` (the contract's formula) for `q` in the box `q`,
 /// each entry clamped to `[−1, 1]`; `None` when `|q|²` is not shown
 /// positive on the box.
-fn rotation([w, x, y, z]: [Interval; 4]) -> Option<[[Interval; 3]; 3]> {
+fn rotation([w, x, y, z]: [Interval; 4]) -> Option<Mat3> {
     let n = w.square() + x.square() + y.square() + z.square();
     if n.lo.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return None;

@@ -2,10 +2,11 @@
 //!
 //! For each body and each of `S = 2^depth` equal sub-intervals ("slices")
 //! `[t_k, t_{k+1}]` of the span, [`sweep`] gives an axis-aligned box that
-//! **provably** holds the body at every instant of the slice; [`broad_phase`]
-//! then sweeps and prunes: a pair is a candidate when the boxes of some
-//! slice overlap, and every other pair is **proven separate** over the
-//! whole span (at each instant the two bodies lie in disjoint boxes).
+//! **provably** holds the body at every instant of the slice, and (but for
+//! affine motions) its centre's box and its shape around it; [`broad_phase`]
+//! then sweeps and prunes: a pair is a candidate when in some slice neither
+//! disjoint boxes nor a separating plane ([`Swept::apart`]) prove it apart,
+//! and every other pair is **proven separate** over the whole span.
 //!
 //! The boxes are outward-rounded `f64` ([`ccd_arith::Interval`]): every
 //! operation rounds away from the true value, so a box is never smaller
@@ -49,9 +50,9 @@
 //! assert_eq!(found.candidates.len(), 1);
 //! let c = &found.candidates[0];
 //! assert_eq!((c.a, c.b), (0, 1));
-//! // They cannot touch before the first slice whose boxes overlap.
-//! // (They touch at t = 1/2 − 1/(10√2) ≈ 0.429; the bound is 3/8.)
-//! assert_eq!(slice_start(&span, DEFAULT_DEPTH, c.first_slice), Rat::from_frac(3, 8));
+//! // They cannot touch before the first slice in which they are not proven
+//! // apart. (They touch at t = 1/2 − 1/(10√2) ≈ 0.429; the bound is 13/32.)
+//! assert_eq!(slice_start(&span, DEFAULT_DEPTH, c.first_slice), Rat::from_frac(13, 32));
 //! assert_eq!(found.pruned, 5);
 //! ```
 
@@ -60,11 +61,11 @@
 mod boxes;
 mod sweep;
 
-pub use boxes::{sweep, Aabb};
+pub use boxes::{sweep, Aabb, Swept};
 pub use sweep::{broad_phase, slice_start, BroadError, BroadPhase, Candidate};
 
-/// The default number of halvings of the span: `2^4 = 16` slices.
-pub const DEFAULT_DEPTH: u32 = 4;
+/// The default number of halvings of the span: `2^5 = 32` slices.
+pub const DEFAULT_DEPTH: u32 = 5;
 
 /// Most halvings [`sweep`] does (`2^10 = 1024` slices); a larger depth is
 /// clamped to it.

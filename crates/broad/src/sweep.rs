@@ -2,18 +2,18 @@
 
 use ccd_arith::{Int, Rat};
 
-use crate::Aabb;
+use crate::{Aabb, Swept};
 
-/// A pair that the broad phase could not prove separate: some slice's
-/// boxes overlap.
+/// A pair that the broad phase could not prove separate: in some slice
+/// neither their boxes nor a plane separate them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Candidate {
     /// The first body (index in the world, `a < b`).
     pub a: usize,
     /// The second body.
     pub b: usize,
-    /// The first slice whose boxes overlap: the two cannot touch before
-    /// [`slice_start`] of it (before, their boxes are disjoint).
+    /// The first slice in which they are not proven apart: the two cannot
+    /// touch before [`slice_start`] of it.
     pub first_slice: usize,
 }
 
@@ -22,9 +22,12 @@ pub struct Candidate {
 pub struct BroadPhase {
     /// The candidate pairs, ordered by `(a, b)`.
     pub candidates: Vec<Candidate>,
-    /// How many pairs are **proven separate** over the whole span: at
-    /// every instant of every slice the two lie in disjoint boxes.
+    /// How many pairs are **proven separate** over the whole span: in
+    /// every slice disjoint boxes or a plane separate them.
     pub pruned: u64,
+    /// How many pairs have overlapping boxes in some slice (the candidates
+    /// of boxes alone; the separating planes prove the rest of them apart).
+    pub box_overlaps: usize,
 }
 
 /// Why the broad phase gave no answer.
@@ -51,25 +54,25 @@ pub fn slice_start(span: &[Rat; 2], depth: u32, k: usize) -> Rat {
     &span[0] + &(&width * &frac)
 }
 
-/// The candidate pairs of bodies whose slice boxes (`boxes[i][k]`: body
-/// `i`, slice `k`, all bodies with the same slices) overlap in some slice.
+/// The candidate pairs: pairs of bodies (all swept over the same slices)
+/// not proven apart in some slice.
 ///
 /// Sweep-and-prune on the bodies' whole-span boxes (the hull of their
 /// slices) along the axis where the boxes' middles spread most, then the
-/// slice test on each pair whose whole-span boxes overlap. A pair is
-/// pruned only when in every slice its boxes are disjoint (closed boxes:
-/// touching faces overlap), so every pruned pair is separate throughout.
-/// Fails rather than collect more than `max_candidates` pairs.
-pub fn broad_phase(boxes: &[Vec<Aabb>], max_candidates: usize) -> Result<BroadPhase, BroadError> {
-    let slices = boxes.first().map_or(0, Vec::len);
-    if boxes.iter().any(|b| b.len() != slices) {
+/// per-slice test [`Swept::apart`] (disjoint boxes, or a separating plane)
+/// on each pair whose whole-span boxes overlap. A pair is pruned only when
+/// it is proven apart in every slice, so every pruned pair is separate
+/// throughout. Fails rather than collect more than `max_candidates` pairs.
+pub fn broad_phase(bodies: &[Swept], max_candidates: usize) -> Result<BroadPhase, BroadError> {
+    let slices = bodies.first().map_or(0, Swept::slices);
+    if bodies.iter().any(|b| b.slices() != slices) {
         return Err(BroadError::Slices);
     }
-    let whole: Vec<Aabb> = boxes
+    let whole: Vec<Aabb> = bodies
         .iter()
         .map(|b| {
-            b.iter()
-                .fold(b.first().copied().unwrap_or(Aabb::ENTIRE), |h, x| h.hull(x))
+            let first = b.boxes.first().copied().unwrap_or(Aabb::ENTIRE);
+            b.boxes.iter().fold(first, |h, x| h.hull(x))
         })
         .collect();
     let axis = sweep_axis(&whole);
@@ -81,6 +84,7 @@ pub fn broad_phase(boxes: &[Vec<Aabb>], max_candidates: usize) -> Result<BroadPh
     });
     let mut active: Vec<usize> = Vec::new();
     let mut candidates = Vec::new();
+    let mut box_overlaps = 0;
     for &i in &order {
         let lo = whole[i].lo[axis];
         active.retain(|&j| whole[j].hi[axis] >= lo);
@@ -89,7 +93,15 @@ pub fn broad_phase(boxes: &[Vec<Aabb>], max_candidates: usize) -> Result<BroadPh
                 continue;
             }
             let (a, b) = (i.min(j), i.max(j));
-            if let Some(first_slice) = (0..slices).find(|&k| boxes[a][k].overlaps(&boxes[b][k])) {
+            let (sa, sb) = (&bodies[a], &bodies[b]);
+            let Some(first_box) = (0..slices).find(|&k| sa.boxes[k].overlaps(&sb.boxes[k])) else {
+                continue;
+            };
+            box_overlaps += 1;
+            if sa.apart_throughout(sb) {
+                continue;
+            }
+            if let Some(first_slice) = (first_box..slices).find(|&k| !sa.apart(sb, k)) {
                 if candidates.len() == max_candidates {
                     return Err(BroadError::TooManyCandidates {
                         limit: max_candidates,
@@ -101,9 +113,10 @@ pub fn broad_phase(boxes: &[Vec<Aabb>], max_candidates: usize) -> Result<BroadPh
         active.push(i);
     }
     candidates.sort_by_key(|c| (c.a, c.b));
-    let n = boxes.len() as u64;
+    let n = bodies.len() as u64;
     let pairs = n * n.saturating_sub(1) / 2;
     Ok(BroadPhase {
+        box_overlaps,
         pruned: pairs - candidates.len() as u64,
         candidates,
     })

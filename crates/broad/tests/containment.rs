@@ -192,16 +192,25 @@ proptest! {
     ) {
         let body = Body { radii, motion };
         let span = [t0.clone(), &t0 + &width];
-        let boxes = sweep(&body, &span, depth);
-        prop_assert_eq!(boxes.len(), 1 << depth);
+        let swept = sweep(&body, &span, depth);
+        prop_assert_eq!(swept.boxes.len(), 1 << depth);
         for (m, y) in samples {
             let u = Rat::from_frac(m, 1000);
             let t = &span[0] + &(&width * &u);
             let Some(x) = place(&body, &y, &u) else { continue };
+            // A small ball around the point touches the body at t: it is
+            // never proven apart from it there.
+            let ball = Body {
+                radii: [0; 3].map(|_| Rat::from_frac(1, 1000)),
+                motion: Motion::Static { center: x.clone(), orientation: Motion::identity() },
+            };
+            let ball = sweep(&ball, &span, depth);
+            prop_assert!(!swept.apart_throughout(&ball) && !ball.apart_throughout(&swept));
             // Every slice that holds t (two at a slice boundary).
-            for (k, b) in boxes.iter().enumerate() {
+            for (k, b) in swept.boxes.iter().enumerate() {
                 if slice_start(&span, depth, k) <= t && t <= slice_start(&span, depth, k + 1) {
                     prop_assert!(contains(b, &x), "slice {k}: {x:?} not in {b:?}");
+                    prop_assert!(!swept.apart(&ball, k) && !ball.apart(&swept, k), "slice {k}: touching pair apart");
                 }
             }
         }
@@ -227,7 +236,7 @@ proptest! {
             },
         };
         let span = [Rat::zero(), Rat::from(2)];
-        let boxes = sweep(&body, &span, depth);
+        let boxes = sweep(&body, &span, depth).boxes;
         let f = |v: &Vec3| v.each_ref().map(Rat::to_f64);
         for (m, y) in samples {
             let t = 2.0 * m as f64 / 1000.0;
@@ -269,7 +278,7 @@ fn boxes_are_tight_enough_to_prune() {
             orientation: Motion::identity(),
         },
     };
-    let boxes = sweep(&body, &[Rat::zero(), Rat::one()], 4);
+    let boxes = sweep(&body, &[Rat::zero(), Rat::one()], 4).boxes;
     for (k, b) in boxes.iter().enumerate() {
         assert!(
             (b.lo[0] - (k as f64 - 1.0)).abs() < 1e-9 && (b.hi[0] - (k as f64 + 2.0)).abs() < 1e-9,
@@ -285,6 +294,32 @@ fn boxes_are_tight_enough_to_prune() {
         radii: ["1e400", "1", "1"].map(|s| s.parse().unwrap()),
         motion: Motion::at_origin(),
     };
-    let b = sweep(&huge, &[Rat::zero(), Rat::one()], 2)[0];
+    let b = sweep(&huge, &[Rat::zero(), Rat::one()], 2).boxes[0];
     assert!(b.hi[0].is_infinite() && b.lo[0].is_infinite());
+}
+
+#[test]
+fn a_separating_plane_prunes_what_boxes_cannot() {
+    // Two unit balls at (0, 0, 0) and (1.5, 1.5, 0): 2.12 apart, so
+    // separate, but their boxes overlap.
+    let ball = |x: i64| Body {
+        radii: [1, 1, 1].map(Rat::from),
+        motion: Motion::Static {
+            center: [Rat::from_frac(x, 2), Rat::from_frac(x, 2), Rat::zero()],
+            orientation: Motion::identity(),
+        },
+    };
+    let span = [Rat::zero(), Rat::one()];
+    let (a, b) = (sweep(&ball(0), &span, 0), sweep(&ball(3), &span, 0));
+    assert!(a.boxes[0].overlaps(&b.boxes[0]));
+    assert!(a.apart(&b, 0) && b.apart(&a, 0));
+    // At (1.4, 1.4, 0) they overlap: not apart.
+    let near = Body {
+        radii: [1, 1, 1].map(Rat::from),
+        motion: Motion::Static {
+            center: [Rat::from_frac(7, 5), Rat::from_frac(7, 5), Rat::zero()],
+            orientation: Motion::identity(),
+        },
+    };
+    assert!(!a.apart(&sweep(&near, &span, 0), 0));
 }
