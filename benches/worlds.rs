@@ -23,7 +23,10 @@ use std::time::Instant;
 /// The coordinate grid: 1/1024 (`CCD_BENCH_GRID` overrides it; the exact
 /// query's cost grows with the numbers' bits).
 fn grid() -> i64 {
-    std::env::var("CCD_BENCH_GRID").ok().and_then(|g| g.parse().ok()).unwrap_or(1024)
+    std::env::var("CCD_BENCH_GRID")
+        .ok()
+        .and_then(|g| g.parse().ok())
+        .unwrap_or(1024)
 }
 
 /// splitmix64: a reproducible stream without a dependency.
@@ -59,28 +62,61 @@ fn random_world(n: usize, a: f64, seed: u64) -> World {
         .map(|i| {
             let cell = [i % side, (i / side) % side, i / (side * side)];
             let radii = [0; 3].map(|_| Rat::from_frac(r.int(4, 8), 8));
-            let c0: [Rat; 3] = std::array::from_fn(|k| r.rat(cell[k] as f64 * a - a / 8.0, cell[k] as f64 * a + a / 8.0));
+            let c0: [Rat; 3] = std::array::from_fn(|k| {
+                r.rat(cell[k] as f64 * a - a / 8.0, cell[k] as f64 * a + a / 8.0)
+            });
             let c1: [Rat; 3] = std::array::from_fn(|k| &c0[k] + &r.rat(-1.0, 1.0));
-            let center = Bezier { points: vec![c0, c1], weights: None };
-            let q0: [Rat; 4] = [0; 4].map(|_| Rat::from(r.int(-3, 3)));
-            let q0 = if q0.iter().all(Rat::is_zero) { Motion::identity() } else { q0 };
-            let motion = if i % 2 == 0 {
-                Motion::Translation { center, orientation: q0 }
-            } else {
-                let q1: [Rat; 4] = std::array::from_fn(|k| &q0[k] + &Rat::from_frac(r.int(-1, 1), 4));
-                let q1 = if q1.iter().all(Rat::is_zero) { q0.clone() } else { q1 };
-                Motion::Rigid { orientation: Bezier { points: vec![q0, q1], weights: None }, center }
+            let center = Bezier {
+                points: vec![c0, c1],
+                weights: None,
             };
-            NamedBody { name: format!("e{i}"), body: Body { radii, motion } }
+            let q0: [Rat; 4] = [0; 4].map(|_| Rat::from(r.int(-3, 3)));
+            let q0 = if q0.iter().all(Rat::is_zero) {
+                Motion::identity()
+            } else {
+                q0
+            };
+            let motion = if i % 2 == 0 {
+                Motion::Translation {
+                    center,
+                    orientation: q0,
+                }
+            } else {
+                let q1: [Rat; 4] =
+                    std::array::from_fn(|k| &q0[k] + &Rat::from_frac(r.int(-1, 1), 4));
+                let q1 = if q1.iter().all(Rat::is_zero) {
+                    q0.clone()
+                } else {
+                    q1
+                };
+                Motion::Rigid {
+                    orientation: Bezier {
+                        points: vec![q0, q1],
+                        weights: None,
+                    },
+                    center,
+                }
+            };
+            NamedBody {
+                name: format!("e{i}"),
+                body: Body { radii, motion },
+            }
         })
         .collect();
-    World { span: [Rat::zero(), Rat::one()], bodies }
+    World {
+        span: [Rat::zero(), Rat::one()],
+        bodies,
+    }
 }
 
 /// The share of pairs whose certified boxes overlap in some slice (the
 /// candidates of a box broad phase; the separating planes then prune more).
 fn candidate_share(w: &World) -> f64 {
-    let swept: Vec<_> = w.bodies.par_iter().map(|b| ccd_broad::sweep(&b.body, &w.span, ccd_broad::DEFAULT_DEPTH)).collect();
+    let swept: Vec<_> = w
+        .bodies
+        .par_iter()
+        .map(|b| ccd_broad::sweep(&b.body, &w.span, ccd_broad::DEFAULT_DEPTH))
+        .collect();
     let found = ccd_broad::broad_phase(&swept, usize::MAX).expect("same slices");
     let n = w.bodies.len() as f64;
     found.box_overlaps as f64 / (n * (n - 1.0) / 2.0)
@@ -117,7 +153,10 @@ fn secs(s: f64) -> String {
 }
 
 fn world_bench(sizes: &[usize], brute_limit: u64) {
-    let opts = Options { contact_geometry: false, ..Options::default() };
+    let opts = Options {
+        contact_geometry: false,
+        ..Options::default()
+    };
     let a = spacing();
     println!("lattice spacing {a:.3} (the boxes of about 1 % of the N = 1000 world's pairs overlap); {} worker threads\n", rayon::current_num_threads());
     println!(
@@ -143,11 +182,16 @@ fn world_bench(sizes: &[usize], brute_limit: u64) {
         // the same pool; above the limit a random sample of pairs, scaled.
         let mut r = Rng(7);
         let sample: Vec<(usize, usize)> = if pairs <= brute_limit {
-            (0..n).flat_map(|i| (i + 1..n).map(move |j| (i, j))).collect()
+            (0..n)
+                .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+                .collect()
         } else {
             (0..brute_limit)
                 .map(|_| loop {
-                    let (i, j) = (r.int(0, n as i64 - 1) as usize, r.int(0, n as i64 - 1) as usize);
+                    let (i, j) = (
+                        r.int(0, n as i64 - 1) as usize,
+                        r.int(0, n as i64 - 1) as usize,
+                    );
                     if i != j {
                         break (i.min(j), i.max(j));
                     }
@@ -159,7 +203,11 @@ fn world_bench(sizes: &[usize], brute_limit: u64) {
             run(&w.pair(i, j), &opts).expect("a valid pair");
         });
         let brute = clock.elapsed().as_secs_f64() * pairs as f64 / sample.len() as f64;
-        let estimated = if sample.len() as u64 == pairs { "" } else { " (est.)" };
+        let estimated = if sample.len() as u64 == pairs {
+            ""
+        } else {
+            " (est.)"
+        };
         let c = out.broad_phase.candidates;
         let boxed = out.broad_phase.box_overlaps;
         println!(
@@ -184,7 +232,8 @@ fn batch_lines(class: &str, n: usize) -> String {
     for _ in 0..n {
         let d: Vec<String> = (0..3).map(|_| format!("{}/64", r.int(-32, 32))).collect();
         let add = |x: &str, k: usize| {
-            let v: Rat = x.parse::<Rat>().expect("a number") + d[k].parse::<Rat>().expect("a fraction");
+            let v: Rat =
+                x.parse::<Rat>().expect("a number") + d[k].parse::<Rat>().expect("a fraction");
             v.to_string()
         };
         let scene = match class {
@@ -226,14 +275,20 @@ fn batch_bench(seconds: f64) {
         // Size the batch to about `seconds` on one thread.
         let probe = batch_lines(class, 8);
         let clock = Instant::now();
-        let one = BatchOptions { threads: 1, ..BatchOptions::default() };
+        let one = BatchOptions {
+            threads: 1,
+            ..BatchOptions::default()
+        };
         run_batch(probe.as_bytes(), std::io::sink(), &one, &|| {}).expect("runs");
         let per = clock.elapsed().as_secs_f64() / 8.0;
         let n = ((seconds / per) as usize).clamp(16, 200_000);
         let lines = batch_lines(class, n);
         let mut rate = [0.0; 2];
         for (k, threads) in [1, 2].into_iter().enumerate() {
-            let opts = BatchOptions { threads, ..BatchOptions::default() };
+            let opts = BatchOptions {
+                threads,
+                ..BatchOptions::default()
+            };
             let clock = Instant::now();
             let s = run_batch(lines.as_bytes(), std::io::sink(), &opts, &|| {}).expect("runs");
             assert_eq!((s.lines, s.errors), (n as u64, 0), "{class}");
@@ -249,11 +304,18 @@ fn batch_bench(seconds: f64) {
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with("--"))
+        .collect();
     let sizes: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
     let want = |what: &str| args.is_empty() || args.iter().any(|a| a == what);
     if want("world") {
-        let sizes = if sizes.is_empty() { vec![100, 1000, 10_000] } else { sizes };
+        let sizes = if sizes.is_empty() {
+            vec![100, 1000, 10_000]
+        } else {
+            sizes
+        };
         world_bench(&sizes, 5000);
         println!();
     }

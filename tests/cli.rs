@@ -337,10 +337,23 @@ fn cli_stdin(args: &[&str], input: &[u8]) -> Output {
 fn a_world_prints_its_contacts() {
     let out = cli(&[&scene("world-crossing.toml"), "--no-geometry"]);
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(text.contains("left × right: first contact ≈ 0.5395042867"), "{text}");
-    assert!(text.contains("first contact in the world ≈ 0.0749830692"), "{text}");
-    assert!(text.contains("proven separate by certified boxes"), "{text}");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        text.contains("left × right: first contact ≈ 0.5395042867"),
+        "{text}"
+    );
+    assert!(
+        text.contains("first contact in the world ≈ 0.0749830692"),
+        "{text}"
+    );
+    assert!(
+        text.contains("proven separate by certified boxes"),
+        "{text}"
+    );
 
     let out = cli(&[&scene("world-crossing.toml"), "--json", "--digits=20"]);
     assert!(out.status.success());
@@ -350,24 +363,42 @@ fn a_world_prints_its_contacts() {
         v["colliding"],
         serde_json::json!([["left", "right"], ["rod", "tumbler"], ["coil", "post"]])
     );
-    assert_eq!(v["first_contact"]["pair"], serde_json::json!(["coil", "post"]));
+    assert_eq!(
+        v["first_contact"]["pair"],
+        serde_json::json!(["coil", "post"])
+    );
     let pairs = v["pairs"].as_array().unwrap();
-    assert_eq!(pairs.len(), v["broad_phase"]["candidates"].as_u64().unwrap() as usize);
-    assert_eq!(pairs.len() as u64 + v["broad_phase"]["pruned"].as_u64().unwrap(), 28);
-    let lr = pairs.iter().find(|p| p["a"] == "left" && p["b"] == "right").unwrap();
+    assert_eq!(
+        pairs.len(),
+        v["broad_phase"]["candidates"].as_u64().unwrap() as usize
+    );
+    assert_eq!(
+        pairs.len() as u64 + v["broad_phase"]["pruned"].as_u64().unwrap(),
+        28
+    );
+    let lr = pairs
+        .iter()
+        .find(|p| p["a"] == "left" && p["b"] == "right")
+        .unwrap();
     assert_eq!(lr["contacts"].as_array().unwrap().len(), 2);
     // --digits=20 reached the pairs.
     let c = &lr["contacts"][0];
     let lo: ccd_arith::Rat = c["lo"].as_str().unwrap().parse().unwrap();
     let hi: ccd_arith::Rat = c["hi"].as_str().unwrap().parse().unwrap();
-    assert!(&hi - &lo <= ccd_arith::Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(20)).unwrap());
+    assert!(
+        &hi - &lo <= ccd_arith::Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(20)).unwrap()
+    );
 
     // First-contact mode: the same earliest pair, no later contact isolated.
     let out = cli(&[&scene("world-crossing.toml"), "--json", "--first-contact"]);
     let f: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(f["first_contact"]["pair"], v["first_contact"]["pair"]);
     assert_eq!(f["complete"], false);
-    assert!(f["pairs"].as_array().unwrap().iter().all(|p| p["contacts"].as_array().unwrap().len() <= 1));
+    assert!(f["pairs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|p| p["contacts"].as_array().unwrap().len() <= 1));
 
     // The world from standard input.
     let text = std::fs::read(scene("world-crossing.toml")).unwrap();
@@ -390,7 +421,11 @@ fn batch_streams_one_line_per_input_line() {
     let pairs = std::fs::read(scene("pairs.jsonl")).unwrap();
     let n = pairs.iter().filter(|&&b| b == b'\n').count();
     let out = cli_stdin(&["batch", "--no-geometry", "--threads", "2"], &pairs);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let lines: Vec<Value> = String::from_utf8(out.stdout)
         .unwrap()
         .lines()
@@ -399,19 +434,28 @@ fn batch_streams_one_line_per_input_line() {
     assert_eq!(lines.len(), n);
     for (i, l) in lines.iter().enumerate() {
         assert_eq!(l["line"], i as u64 + 1);
-        assert!(l.get("error").is_some() != l.get("timeline").is_some(), "{l}");
+        assert!(
+            l.get("error").is_some() != l.get("timeline").is_some(),
+            "{l}"
+        );
     }
     // The first line is Example 5.1; the error lines name their field.
     assert_eq!(lines[0]["contacts"].as_array().unwrap().len(), 2);
     let errors: Vec<&Value> = lines.iter().filter(|l| l.get("error").is_some()).collect();
     assert!(errors.iter().any(|l| l["field"] == "a.radii[1]"));
-    assert!(errors
-        .iter()
-        .all(|l| l["error"].as_str().unwrap().starts_with(&format!("line {}: ", l["line"]))));
+    assert!(errors.iter().all(|l| l["error"]
+        .as_str()
+        .unwrap()
+        .starts_with(&format!("line {}: ", l["line"]))));
     assert!(String::from_utf8_lossy(&out.stderr).contains("error lines"));
 
     // The same from a file, on one thread, is the same output.
-    let one = cli(&["batch", &scene("pairs.jsonl"), "--no-geometry", "--threads=1"]);
+    let one = cli(&[
+        "batch",
+        &scene("pairs.jsonl"),
+        "--no-geometry",
+        "--threads=1",
+    ]);
     let one: Vec<Value> = String::from_utf8(one.stdout)
         .unwrap()
         .lines()
@@ -434,9 +478,16 @@ fn a_batch_line_over_the_limit_is_an_error_line() {
         .collect();
     assert_eq!(lines.len(), 4);
     assert_eq!(lines[0]["collision_free"], true);
-    assert!(lines[1]["error"].as_str().unwrap().contains("too large"), "{}", lines[1]);
+    assert!(
+        lines[1]["error"].as_str().unwrap().contains("too large"),
+        "{}",
+        lines[1]
+    );
     assert_eq!(lines[1]["field"], "<file>");
-    assert!(lines[2]["error"].as_str().unwrap().starts_with("line 3: not JSON"));
+    assert!(lines[2]["error"]
+        .as_str()
+        .unwrap()
+        .starts_with("line 3: not JSON"));
     assert_eq!(lines[3]["collision_free"], true);
 }
 
@@ -445,7 +496,10 @@ fn help_and_options_work_as_users_expect() {
     let out = cli(&["help", "batch"]);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("JSON Lines") && text.contains("EXAMPLES"), "{text}");
+    assert!(
+        text.contains("JSON Lines") && text.contains("EXAMPLES"),
+        "{text}"
+    );
     let out = cli(&["-V"]);
     assert!(String::from_utf8_lossy(&out.stdout).contains("integers"));
     let out = cli(&[&scene("paper-example-5-1.toml"), "--digits=1001"]);

@@ -110,7 +110,12 @@ impl Swept {
         if !self.boxes[k].overlaps(&o.boxes[k]) {
             return true;
         }
-        match (self.centres.get(k), o.centres.get(k), self.shape(k), o.shape(k)) {
+        match (
+            self.centres.get(k),
+            o.centres.get(k),
+            self.shape(k),
+            o.shape(k),
+        ) {
             (Some(ca), Some(cb), Some(sa), Some(sb)) => plane(ca, &sa, cb, &sb),
             _ => false,
         }
@@ -182,7 +187,13 @@ impl Swept {
 
 /// An upper bound on `max_{|Y| <= 1} n·(M·Y) = ‖Mᵀn‖` (a ball: `r·‖n‖`).
 fn support(s: &Shape, n: &[Interval; 3]) -> f64 {
-    let norm = |v: [Interval; 3]| sqrt_up(v.iter().fold(Interval::point(0.0), |a, x| a + x.square()).hi);
+    let norm = |v: [Interval; 3]| {
+        sqrt_up(
+            v.iter()
+                .fold(Interval::point(0.0), |a, x| a + x.square())
+                .hi,
+        )
+    };
     let ball = |r: f64| (r * norm(*n)).next_up();
     match s {
         Shape::Ball(r) => ball(*r),
@@ -249,15 +260,25 @@ pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Swept {
                 _ => Aabb::ENTIRE,
             })
             .collect();
-        let centres = centres.into_iter().map(|c| c.unwrap_or([Interval::ENTIRE; 3])).collect();
-        Swept { boxes, centres, shapes }
+        let centres = centres
+            .into_iter()
+            .map(|c| c.unwrap_or([Interval::ENTIRE; 3]))
+            .collect();
+        Swept {
+            boxes,
+            centres,
+            shapes,
+        }
     };
     let fixed = |q: &Quat| Shapes::Fixed(shape(&radii, rotation(point_quat(q))));
     match &body.motion {
         Motion::Static {
             center,
             orientation,
-        } => from(vec![Some(center.each_ref().map(Interval::from_rat)); slices], fixed(orientation)),
+        } => from(
+            vec![Some(center.each_ref().map(Interval::from_rat)); slices],
+            fixed(orientation),
+        ),
         Motion::Translation {
             center,
             orientation,
@@ -273,7 +294,8 @@ pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Swept {
             let shapes = leaves(&q, depth)
                 .into_iter()
                 .map(|q| {
-                    let rot = q.and_then(|q| rotation(hull(q.iter().map(|p| [p[0], p[1], p[2], p[3]]))));
+                    let rot =
+                        q.and_then(|q| rotation(hull(q.iter().map(|p| [p[0], p[1], p[2], p[3]]))));
                     shape(&radii, rot)
                 })
                 .collect();
@@ -299,7 +321,11 @@ pub fn sweep(body: &Body, span: &[Rat; 2], depth: u32) -> Swept {
             center,
             ..
         } => {
-            let shapes = if rate.is_zero() { fixed(orientation) } else { Shapes::Fixed(shape(&radii, None)) };
+            let shapes = if rate.is_zero() {
+                fixed(orientation)
+            } else {
+                Shapes::Fixed(shape(&radii, None))
+            };
             let centres = (0..slices)
                 .map(|k| {
                     let t = Interval::from_rat(&crate::slice_start(span, depth, k))
@@ -317,7 +343,12 @@ fn extent(s: &Shape) -> [f64; 3] {
     match s {
         Shape::Ball(r) => [*r; 3],
         Shape::Matrix(m, r) => m.map(|row| {
-            sqrt_up(row.iter().fold(Interval::point(0.0), |a, x| a + x.square()).hi).min(*r)
+            sqrt_up(
+                row.iter()
+                    .fold(Interval::point(0.0), |a, x| a + x.square())
+                    .hi,
+            )
+            .min(*r)
         }),
     }
 }

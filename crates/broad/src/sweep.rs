@@ -37,7 +37,7 @@ pub enum BroadError {
     /// More candidate pairs than allowed (the bodies crowd together or
     /// sweep through most of the world), refused before the exact queries
     /// rather than run.
-    #[error("limit `candidate pairs`: more than {limit} pairs of bodies could not be proven separate by their boxes")]
+    #[error("limit `candidate pairs`: more than {limit} pairs of bodies could not be proven separate by the broad phase")]
     TooManyCandidates {
         /// The limit.
         limit: usize,
