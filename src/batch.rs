@@ -59,7 +59,7 @@ pub enum BatchError {
     Threads(#[from] rayon::ThreadPoolBuildError),
 }
 
-/// One input line: its bytes, or its length when it is over the limit (its
+/// One input line: its bytes, or the mark of a line over the limit (whose
 /// bytes are skipped, not kept).
 enum Line {
     Text(Vec<u8>),
