@@ -121,8 +121,9 @@ pub fn to_json(outcome: &Outcome) -> Value {
 /// names in file order), `undecided`, `first_contact` (a time with
 /// `"pair": [a, b]`, or `null`), `pairs` (each queried candidate pair: `a`,
 /// `b` and the pair result object, or `error`), `broad_phase`
-/// (`candidates`, `pruned`, `box_overlaps`, `slices`), `complete` and
-/// `certified`.
+/// (`candidates`, `pruned`, `box_overlaps`, `slices`, and
+/// `pruned_proven_separate: true`: a pruned pair is proven separate
+/// throughout), `complete` and `certified`.
 pub fn world_to_json(world: &WorldOutcome) -> Value {
     let d = approx_digits(&world.span);
     let name = |i: usize| Value::from(world.bodies[i].as_str());
@@ -169,6 +170,7 @@ pub fn world_to_json(world: &WorldOutcome) -> Value {
             "candidates": world.broad_phase.candidates,
             "pruned": world.broad_phase.pruned,
             "box_overlaps": world.broad_phase.box_overlaps,
+            "pruned_proven_separate": true,
             "slices": world.broad_phase.slices,
         },
         "complete": world.complete,

@@ -376,6 +376,7 @@ fn a_world_prints_its_contacts() {
         pairs.len() as u64 + v["broad_phase"]["pruned"].as_u64().unwrap(),
         28
     );
+    assert_eq!(v["broad_phase"]["pruned_proven_separate"], true);
     let lr = pairs
         .iter()
         .find(|p| p["a"] == "left" && p["b"] == "right")
