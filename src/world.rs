@@ -16,8 +16,9 @@ use crate::{run, CcdError, Options};
 /// world may send to the exact query; more is refused with
 /// [`ccd_broad::BroadError::TooManyCandidates`] before any query runs
 /// (a world whose bodies crowd together, e.g. many bodies at one place).
-/// Each candidate's result is kept for the answer, a few kB each.
-pub const MAX_CANDIDATE_PAIRS: usize = 1_000_000;
+/// Each candidate's result is kept for the answer, and its JSON: up to
+/// about 10 kB a pair, so the cap keeps a world's answer to a few GB.
+pub const MAX_CANDIDATE_PAIRS: usize = 500_000;
 
 /// The exact query's answer for one candidate pair.
 #[derive(Clone, Debug)]

@@ -301,3 +301,19 @@ fn the_shipped_world_agrees_with_its_pairs() {
     assert_eq!(names(fc.pair), ("coil", "post"));
     assert!(got.broad_phase.pruned >= 20, "{:?}", got.broad_phase);
 }
+
+#[test]
+fn a_crowded_world_stops_at_the_candidate_cap() {
+    // 1001 balls at one place: 500500 pairs, none provably separate.
+    let ball = Body {
+        radii: [1, 1, 1].map(Rat::from),
+        motion: Motion::at_origin(),
+    };
+    let w = world(vec![ball; 1001]);
+    let e = run_world(&w, &options()).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("limit `candidate pairs`: more than 500000"),
+        "{e}"
+    );
+}
