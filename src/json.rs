@@ -2,11 +2,13 @@
 
 use ccd_arith::Rat;
 use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome};
+
+use crate::WorldOutcome;
 use serde_json::{json, Value};
 
 /// Decimals of `approx`: 12, plus one per leading zero of the span's width.
-fn approx_digits(outcome: &Outcome) -> u32 {
-    let width = (&outcome.span[1] - &outcome.span[0]).to_f64();
+fn approx_digits(span: &[Rat; 2]) -> u32 {
+    let width = (&span[1] - &span[0]).to_f64();
     let extra = if width < 1.0 {
         (-width.log10()).ceil().clamp(0.0, 300.0) as u32
     } else {
@@ -81,7 +83,7 @@ fn gap(g: &Gap) -> Value {
 /// `gaps`, `collision_free_reason`, a `certified` flag per segment, and
 /// `stats`, which consumers may ignore; semantics in `docs/scene-format.md`).
 pub fn to_json(outcome: &Outcome) -> Value {
-    let d = approx_digits(outcome);
+    let d = approx_digits(&outcome.span);
     let s = &outcome.stats;
     json!({
         "format": 1,
@@ -111,5 +113,67 @@ pub fn to_json(outcome: &Outcome) -> Value {
             "candidates": s.candidates,
             "sr0_formed": s.sr0_formed,
         },
+    })
+}
+
+/// A world's result as the contract's JSON object (`docs/scene-format.md`,
+/// "World result"): `bodies`, `colliding` (pairs proven to touch or overlap,
+/// names in file order), `undecided`, `first_contact` (a time with
+/// `"pair": [a, b]`, or `null`), `pairs` (each queried candidate pair: `a`,
+/// `b` and the pair result object, or `error`), `broad_phase`
+/// (`candidates`, `pruned`, `box_overlaps`, `slices`, and
+/// `pruned_proven_separate: true`: a pruned pair is proven separate
+/// throughout), `complete` and `certified`.
+pub fn world_to_json(world: &WorldOutcome) -> Value {
+    let d = approx_digits(&world.span);
+    let name = |i: usize| Value::from(world.bodies[i].as_str());
+    let pair_names = |list: Vec<(usize, usize)>| {
+        list.into_iter()
+            .map(|(a, b)| json!([name(a), name(b)]))
+            .collect::<Vec<_>>()
+    };
+    let pairs: Vec<Value> = world
+        .pairs
+        .iter()
+        .map(|p| {
+            let mut obj = serde_json::Map::new();
+            obj.insert("a".into(), name(p.a));
+            obj.insert("b".into(), name(p.b));
+            match &p.result {
+                Ok(o) => {
+                    if let Value::Object(m) = to_json(o) {
+                        obj.extend(m);
+                    }
+                }
+                Err(e) => {
+                    obj.insert("error".into(), e.to_string().into());
+                }
+            }
+            Value::Object(obj)
+        })
+        .collect();
+    json!({
+        "format": 1,
+        "span": [world.span[0].to_string(), world.span[1].to_string()],
+        "bodies": world.bodies,
+        "colliding": pair_names(world.colliding()),
+        "undecided": pair_names(world.undecided()),
+        "first_contact": world.first_contact.as_ref().map(|c| {
+            let mut v = instant(&c.instant, d);
+            if let Some(obj) = v.as_object_mut() {
+                obj.insert("pair".into(), json!([name(c.pair.0), name(c.pair.1)]));
+            }
+            v
+        }),
+        "pairs": pairs,
+        "broad_phase": {
+            "candidates": world.broad_phase.candidates,
+            "pruned": world.broad_phase.pruned,
+            "box_overlaps": world.broad_phase.box_overlaps,
+            "pruned_proven_separate": true,
+            "slices": world.broad_phase.slices,
+        },
+        "complete": world.complete,
+        "certified": world.certified(),
     })
 }

@@ -56,17 +56,23 @@
 
 #![warn(missing_docs)]
 
+mod batch;
 mod json;
+mod world;
 
+pub use batch::{batch_line, run_batch, BatchError, BatchOptions, BatchSummary};
 pub use ccd_algorithm::{Arithmetic, CcdError, Options};
 pub use ccd_arith::{Int, Rat};
 pub use ccd_exact_arith::{symbolic, MAX_EXACT_BITS};
 pub use ccd_motion::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
-pub use ccd_scene::{Scene, SceneError};
+pub use ccd_scene::{Scene, SceneError, SceneFile, World};
 pub use ccd_timeline::{
     Box3, Branch, Gap, Geometry, Instant, Outcome, Path, Segment, State, Stats, Witness,
 };
-pub use json::to_json;
+pub use json::{to_json, world_to_json};
+pub use world::{
+    run_world, BroadStats, PairResult, WorldContact, WorldOutcome, MAX_CANDIDATE_PAIRS,
+};
 
 /// Everything needed to build a scene in code, run it and read the result.
 pub mod prelude {

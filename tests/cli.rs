@@ -311,3 +311,201 @@ fn helical_output_says_what_is_not_proven() {
         .iter()
         .all(|s| s["certified"] == true));
 }
+
+fn cli_stdin(args: &[&str], input: &[u8]) -> Output {
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ccd-exact"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let input = input.to_vec();
+    // Written from a thread: the child streams output while it reads.
+    let writer = std::thread::spawn(move || {
+        use std::io::Write;
+        let _ = stdin.write_all(&input);
+    });
+    let out = child.wait_with_output().unwrap();
+    writer.join().unwrap();
+    out
+}
+
+#[test]
+fn a_world_prints_its_contacts() {
+    let out = cli(&[&scene("world-crossing.toml"), "--no-geometry"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        text.contains("left × right: first contact ≈ 0.5395042867"),
+        "{text}"
+    );
+    assert!(
+        text.contains("first contact in the world ≈ 0.0749830692"),
+        "{text}"
+    );
+    assert!(
+        text.contains("proven separate by certified boxes"),
+        "{text}"
+    );
+
+    let out = cli(&[&scene("world-crossing.toml"), "--json", "--digits=20"]);
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["bodies"].as_array().unwrap().len(), 8);
+    assert_eq!(
+        v["colliding"],
+        serde_json::json!([["left", "right"], ["rod", "tumbler"], ["coil", "post"]])
+    );
+    assert_eq!(
+        v["first_contact"]["pair"],
+        serde_json::json!(["coil", "post"])
+    );
+    let pairs = v["pairs"].as_array().unwrap();
+    assert_eq!(
+        pairs.len(),
+        v["broad_phase"]["candidates"].as_u64().unwrap() as usize
+    );
+    assert_eq!(
+        pairs.len() as u64 + v["broad_phase"]["pruned"].as_u64().unwrap(),
+        28
+    );
+    assert_eq!(v["broad_phase"]["pruned_proven_separate"], true);
+    let lr = pairs
+        .iter()
+        .find(|p| p["a"] == "left" && p["b"] == "right")
+        .unwrap();
+    assert_eq!(lr["contacts"].as_array().unwrap().len(), 2);
+    // --digits=20 reached the pairs.
+    let c = &lr["contacts"][0];
+    let lo: ccd_arith::Rat = c["lo"].as_str().unwrap().parse().unwrap();
+    let hi: ccd_arith::Rat = c["hi"].as_str().unwrap().parse().unwrap();
+    assert!(
+        &hi - &lo <= ccd_arith::Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(20)).unwrap()
+    );
+
+    // First-contact mode: the same earliest pair, no later contact isolated.
+    let out = cli(&[&scene("world-crossing.toml"), "--json", "--first-contact"]);
+    let f: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(f["first_contact"]["pair"], v["first_contact"]["pair"]);
+    assert_eq!(f["complete"], false);
+    assert!(f["pairs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|p| p["contacts"].as_array().unwrap().len() <= 1));
+
+    // The world from standard input.
+    let text = std::fs::read(scene("world-crossing.toml")).unwrap();
+    let out = cli_stdin(&["-", "--json", "--no-geometry"], &text);
+    assert!(out.status.success());
+    let s: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(s["colliding"], v["colliding"]);
+}
+
+#[test]
+fn a_bad_world_exits_2_naming_the_body() {
+    let text = "[[body]]\nname = \"ball\"\nradii = [1, 1, 1]\n[[body]]\nname = \"arm-2\"\nradii = [1, 1, 1]\nmotion = { kind = \"translation\", center = [[0, 0, 0], [1, 0]] }\n";
+    let (code, err) = cli_on("bad-world.toml", text);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("body[1] \"arm-2\".motion.center[1]"), "{err}");
+}
+
+#[test]
+fn batch_streams_one_line_per_input_line() {
+    let pairs = std::fs::read(scene("pairs.jsonl")).unwrap();
+    let n = pairs.iter().filter(|&&b| b == b'\n').count();
+    let out = cli_stdin(&["batch", "--no-geometry", "--threads", "2"], &pairs);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines: Vec<Value> = String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("each line is JSON"))
+        .collect();
+    assert_eq!(lines.len(), n);
+    for (i, l) in lines.iter().enumerate() {
+        assert_eq!(l["line"], i as u64 + 1);
+        assert!(
+            l.get("error").is_some() != l.get("timeline").is_some(),
+            "{l}"
+        );
+    }
+    // The first line is Example 5.1; the error lines name their field.
+    assert_eq!(lines[0]["contacts"].as_array().unwrap().len(), 2);
+    let errors: Vec<&Value> = lines.iter().filter(|l| l.get("error").is_some()).collect();
+    assert!(errors.iter().any(|l| l["field"] == "a.radii[1]"));
+    assert!(errors.iter().all(|l| l["error"]
+        .as_str()
+        .unwrap()
+        .starts_with(&format!("line {}: ", l["line"]))));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("error lines"));
+
+    // The same from a file, on one thread, is the same output.
+    let one = cli(&[
+        "batch",
+        &scene("pairs.jsonl"),
+        "--no-geometry",
+        "--threads=1",
+    ]);
+    let one: Vec<Value> = String::from_utf8(one.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(one, lines);
+}
+
+#[test]
+fn a_batch_line_over_the_limit_is_an_error_line() {
+    let good = r#"{"a": {"radii": [1, 1, 1]}, "b": {"radii": [1, 1, 1], "motion": {"kind": "static", "center": [5, 0, 0]}}}"#;
+    let huge = format!("{{\"a\": \"{}\"}}", "x".repeat(ccd_scene::MAX_INPUT_BYTES));
+    let input = format!("{good}\n{huge}\n\n{good}");
+    let out = cli_stdin(&["batch"], input.as_bytes());
+    assert!(out.status.success());
+    let lines: Vec<Value> = String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 4);
+    assert_eq!(lines[0]["collision_free"], true);
+    assert!(
+        lines[1]["error"].as_str().unwrap().contains("too large"),
+        "{}",
+        lines[1]
+    );
+    assert_eq!(lines[1]["field"], "<file>");
+    assert!(lines[2]["error"]
+        .as_str()
+        .unwrap()
+        .starts_with("line 3: not JSON"));
+    assert_eq!(lines[3]["collision_free"], true);
+}
+
+#[test]
+fn help_and_options_work_as_users_expect() {
+    let out = cli(&["help", "batch"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("JSON Lines") && text.contains("EXAMPLES"),
+        "{text}"
+    );
+    let out = cli(&["-V"]);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("integers"));
+    let out = cli(&[&scene("paper-example-5-1.toml"), "--digits=1001"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--digits"));
+    let out = cli(&["batch", "/nonexistent/pairs.jsonl"]);
+    assert_eq!(out.status.code(), Some(2));
+}

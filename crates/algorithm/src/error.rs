@@ -46,13 +46,17 @@ pub enum CcdError {
         /// What the query reached (or would need) when it stopped.
         reached: u64,
     },
+    /// The broad phase of a world refused it (too many candidate pairs).
+    #[error(transparent)]
+    Broad(#[from] ccd_broad::BroadError),
     /// A broken invariant inside the engine (a bug: please report it).
     #[error("internal error: {0}")]
     Internal(String),
 }
 
 impl CcdError {
-    /// Attaches the body (`a` or `b`) and the field that a motion error is about.
+    /// Attaches the body (`a` or `b`, or a world's `body[3] "arm-2"`) and
+    /// the field that a motion error is about.
     pub fn motion(body: &str, source: MotionError) -> CcdError {
         let field = source.field();
         CcdError::Motion {

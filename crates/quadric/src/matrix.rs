@@ -139,7 +139,7 @@ pub fn adj4_column<R: RingOps>(m: &Mat4<R>, j: usize) -> [R; 4] {
         let sub: Mat3<R> =
             std::array::from_fn(|r| std::array::from_fn(|c| m[rows[r]][cols[c]].clone()));
         let minor = det3(&sub);
-        if (i + j) % 2 == 0 {
+        if (i + j).is_multiple_of(2) {
             minor
         } else {
             minor.negated()
@@ -326,7 +326,7 @@ mod tests {
             }
             for i in 0..k {
                 rec(k - 1, p, sign, m, total);
-                let j = if k % 2 == 0 { i } else { 0 };
+                let j = if k.is_multiple_of(2) { i } else { 0 };
                 if i + 1 < k {
                     p.swap(j, k - 1);
                     *sign = -*sign;

@@ -3,7 +3,7 @@
 use ccd_arith::{excerpt, ParseRatError, Rat};
 use std::fmt;
 
-use crate::{MAX_CONTROL_POINTS, MAX_INPUT_BYTES};
+use crate::{MAX_BODIES, MAX_CONTROL_POINTS, MAX_INPUT_BYTES};
 
 /// The TOML type of a value, as expected by the format or as found in a file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -23,6 +23,8 @@ pub enum TomlType {
     Table,
     /// An array of tables `[[header]]`.
     ArrayOfTables,
+    /// JSON `null` (scene JSON only).
+    Null,
 }
 
 impl fmt::Display for TomlType {
@@ -35,6 +37,7 @@ impl fmt::Display for TomlType {
             TomlType::Array => "an array",
             TomlType::Table => "a table",
             TomlType::ArrayOfTables => "an array of tables",
+            TomlType::Null => "null",
         })
     }
 }
@@ -49,6 +52,8 @@ pub enum Limit {
     /// A number's text is longer than [`Rat::MAX_TEXT`] characters or its
     /// exponent exceeds [`Rat::MAX_EXPONENT`] in magnitude.
     Number,
+    /// A world has more than [`MAX_BODIES`] bodies.
+    Bodies,
 }
 
 impl fmt::Display for Limit {
@@ -70,6 +75,7 @@ impl fmt::Display for Limit {
                 Rat::MAX_TEXT,
                 Rat::MAX_EXPONENT
             ),
+            Limit::Bodies => write!(f, "at most {MAX_BODIES} bodies in a world"),
         }
     }
 }
@@ -92,6 +98,42 @@ pub enum SceneError {
         column: usize,
         /// The TOML parser's description.
         message: String,
+    },
+    /// The text is not valid JSON (a scene written as JSON, e.g. one line
+    /// of `ccd-exact batch`; 1-based line and column).
+    #[error("not JSON (line {line}, column {column}): {message}")]
+    NotJson {
+        /// Line of the syntax error.
+        line: usize,
+        /// Column of the syntax error.
+        column: usize,
+        /// The JSON parser's description.
+        message: String,
+    },
+    /// A JSON number that is not an integer: JSON numbers with a fraction
+    /// or an exponent are binary floating point once parsed, so a scene
+    /// writes them as strings (`"0.1"`, `"1/3"`, `"1e-20"`).
+    #[error("field `{field}`: a JSON number that is not an integer is not exact; write it as a string, e.g. \"0.1\" or \"1/3\"")]
+    JsonFloat {
+        /// Path of the number.
+        field: String,
+    },
+    /// A JSON `null` inside an array (a key whose value is `null` is read
+    /// as absent).
+    #[error("field `{field}`: null is not a value of the scene format")]
+    JsonNull {
+        /// Path of the null.
+        field: String,
+    },
+    /// Two bodies of a world with the same name, or a body with an empty
+    /// name.
+    #[error("field `{field}`: {}", match .first { Some(i) => format!("the name is already that of body[{i}]"), None => "a name must not be empty".to_string() })]
+    Name {
+        /// Path of the second body's `name`.
+        field: String,
+        /// The index of the first body with that name (`None`: the name
+        /// is empty).
+        first: Option<usize>,
     },
     /// A required field is absent. A `motion` table that is present needs a
     /// `kind`: its absence is reported here as `….motion.kind`.
@@ -200,10 +242,10 @@ pub enum SceneError {
 
 impl SceneError {
     /// The dotted path of the offending field (`None` only for
-    /// [`SceneError::NotToml`]; `<file>` for an oversized input).
+    /// [`SceneError::NotToml`] and [`SceneError::NotJson`]; `<file>` for an oversized input).
     pub fn field(&self) -> Option<&str> {
         match self {
-            SceneError::NotToml { .. } => None,
+            SceneError::NotToml { .. } | SceneError::NotJson { .. } => None,
             SceneError::Span { .. } => Some("span"),
             SceneError::UnsupportedFormat { .. } => Some("format"),
             SceneError::Missing { field }
@@ -216,6 +258,9 @@ impl SceneError {
             | SceneError::UnknownKind { field, .. }
             | SceneError::ZeroQuaternion { field }
             | SceneError::ZeroAxis { field }
+            | SceneError::JsonFloat { field }
+            | SceneError::JsonNull { field }
+            | SceneError::Name { field, .. }
             | SceneError::TooLarge { field, .. } => Some(field),
         }
     }
@@ -249,6 +294,11 @@ impl FieldPath {
         } else {
             FieldPath(format!("{}.{key}", self.0))
         }
+    }
+    /// The path of body `i` of a world, named `name`: `body[3] "arm-2"`
+    /// (the name cut as [`FieldPath::key`] cuts keys).
+    pub(crate) fn body(i: usize, name: &str) -> FieldPath {
+        FieldPath(format!("body[{i}] {:?}", excerpt(name)))
     }
     /// `self[i]`.
     pub(crate) fn index(&self, i: usize) -> FieldPath {

@@ -9,7 +9,7 @@ use toml_edit::{Array, DocumentMut, Item, TableLike, TomlError, Value};
 use crate::error::{FieldPath, Limit, SceneError, TomlType};
 use crate::number::{item_type, number, value_type};
 use crate::validate::control_count;
-use crate::{Scene, MAX_INPUT_BYTES};
+use crate::{NamedBody, Scene, SceneFile, World, MAX_BODIES, MAX_INPUT_BYTES};
 
 type Result<T> = std::result::Result<T, SceneError>;
 
@@ -17,34 +17,135 @@ type Result<T> = std::result::Result<T, SceneError>;
 trait Read<T>: Fn(&Value, &FieldPath) -> Result<T> {}
 impl<T, F: Fn(&Value, &FieldPath) -> Result<T>> Read<T> for F {}
 
-/// Parses and validates scene text (see [`Scene::from_toml`]).
-pub(crate) fn parse_scene(text: &str) -> Result<Scene> {
+/// The root table of TOML text, after the size check.
+fn toml_root(text: &str) -> Result<DocumentMut> {
     if text.len() > MAX_INPUT_BYTES {
         return Err(SceneError::TooLarge {
             field: "<file>".to_string(),
             limit: Limit::InputBytes,
         });
     }
-    let doc: DocumentMut = text.parse().map_err(|e| not_toml(text, &e))?;
-    let root = Table {
-        t: doc.as_table(),
-        path: FieldPath::default(),
-    };
+    text.parse().map_err(|e| not_toml(text, &e))
+}
+
+/// Parses and validates scene text (see [`Scene::from_toml`]).
+pub(crate) fn parse_scene(text: &str) -> Result<Scene> {
+    let doc = toml_root(text)?;
+    pair(&Table::root(doc.as_table()))
+}
+
+/// Parses and validates a pair or world file (see [`SceneFile::from_toml`]).
+pub(crate) fn parse_file(text: &str) -> Result<SceneFile> {
+    let doc = toml_root(text)?;
+    file(&Table::root(doc.as_table()))
+}
+
+/// Parses and validates a pair scene written as JSON (see
+/// [`Scene::from_json`]).
+pub(crate) fn parse_json_scene(text: &str) -> Result<Scene> {
+    if text.len() > MAX_INPUT_BYTES {
+        return Err(SceneError::TooLarge {
+            field: "<file>".to_string(),
+            limit: Limit::InputBytes,
+        });
+    }
+    let table = crate::json::to_table(text)?;
+    pair(&Table::root(&table))
+}
+
+/// A pair file when the root has no `body` key, a world file otherwise.
+fn file(root: &Table<'_>) -> Result<SceneFile> {
+    if root.get("body").is_some() {
+        world(root).map(SceneFile::World)
+    } else {
+        pair(root).map(|s| SceneFile::Pair(Box::new(s)))
+    }
+}
+
+/// `format` (which must be 1 when present) and `span`, after checking that
+/// the root has no key but `format`, `span` and `bodies`.
+fn header(root: &Table<'_>, bodies: &[&str]) -> Result<[Rat; 2]> {
     // The format first: a later format may have other keys.
     if let Some(found) = root.optional("format", TomlType::Number, number)? {
         if found != Rat::one() {
             return Err(SceneError::UnsupportedFormat { found });
         }
     }
-    root.only(&["format", "span", "a", "b"])?;
-    let span = root
+    let allowed: Vec<&str> = ["format", "span"].iter().chain(bodies).copied().collect();
+    root.only(&allowed)?;
+    Ok(root
         .optional("span", TomlType::Array, fixed::<_, 2>(number))?
-        .unwrap_or_else(Scene::default_span);
-    let a = body(&root.child("a")?)?;
-    let b = body(&root.child("b")?)?;
+        .unwrap_or_else(Scene::default_span))
+}
+
+/// A pair scene: `[a]` and `[b]`.
+fn pair(root: &Table<'_>) -> Result<Scene> {
+    let span = header(root, &["a", "b"])?;
+    const KEYS: [&str; 2] = ["radii", "motion"];
+    let a = body(&root.child("a")?, &KEYS)?;
+    let b = body(&root.child("b")?, &KEYS)?;
     let scene = Scene { span, a, b };
     scene.validate()?;
     Ok(scene)
+}
+
+/// A world scene: `[[body]]` tables (or `body = [{…}, …]`), each with a
+/// `name`.
+fn world(root: &Table<'_>) -> Result<World> {
+    let span = header(root, &["body"])?;
+    let (item, path) = root.require("body")?;
+    let tables: Vec<&dyn TableLike> = match item {
+        Item::ArrayOfTables(a) => a.iter().map(|t| t as &dyn TableLike).collect(),
+        Item::Value(Value::Array(a)) => a
+            .iter()
+            .enumerate()
+            .map(|(i, v)| match v {
+                Value::InlineTable(t) => Ok(t as &dyn TableLike),
+                other => Err(SceneError::WrongType {
+                    field: path.index(i).to_field(),
+                    expected: TomlType::Table,
+                    found: value_type(other),
+                }),
+            })
+            .collect::<Result<_>>()?,
+        other => {
+            return Err(SceneError::WrongType {
+                field: path.to_field(),
+                expected: TomlType::ArrayOfTables,
+                found: item_type(other),
+            })
+        }
+    };
+    if tables.len() > MAX_BODIES {
+        return Err(SceneError::TooLarge {
+            field: path.to_field(),
+            limit: Limit::Bodies,
+        });
+    }
+    let bodies = tables
+        .into_iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let t = Table {
+                t,
+                path: path.index(i),
+            };
+            let name = t.required("name", TomlType::String, |v: &Value, p: &FieldPath| {
+                string(v, p).map(str::to_string)
+            })?;
+            let named = Table {
+                t: t.t,
+                path: FieldPath::body(i, &name),
+            };
+            Ok(NamedBody {
+                name,
+                body: body(&named, &["name", "radii", "motion"])?,
+            })
+        })
+        .collect::<Result<_>>()?;
+    let world = World { span, bodies };
+    world.validate()?;
+    Ok(world)
 }
 
 /// A TOML syntax error, located by line and column.
@@ -75,6 +176,13 @@ struct Table<'a> {
 }
 
 impl<'a> Table<'a> {
+    /// The root table of a document.
+    fn root(t: &'a dyn TableLike) -> Table<'a> {
+        Table {
+            t,
+            path: FieldPath::default(),
+        }
+    }
     /// `item` at `path`, which must be a table.
     fn open(item: &'a Item, path: FieldPath) -> Result<Table<'a>> {
         match item.as_table_like() {
@@ -224,9 +332,10 @@ fn zero3() -> Vec3 {
     [Rat::zero(), Rat::zero(), Rat::zero()]
 }
 
-/// One `[a]` / `[b]` table.
-fn body(t: &Table<'_>) -> Result<Body> {
-    t.only(&["radii", "motion"])?;
+/// One `[a]` / `[b]` table (keys `radii`, `motion`), or a world's
+/// `[[body]]` table (also `name`, which the caller reads).
+fn body(t: &Table<'_>, keys: &[&str]) -> Result<Body> {
+    t.only(keys)?;
     let radii = t.required("radii", TomlType::Array, vec3)?;
     let motion = match t.get("motion") {
         Some((item, path)) => motion(&Table::open(item, path)?)?,

@@ -5,21 +5,53 @@ use ccd_arith::Rat;
 use ccd_motion::{Bezier, Body, Motion};
 
 use crate::error::{FieldPath, Limit, SceneError};
-use crate::{Scene, MAX_CONTROL_POINTS};
+use crate::{Scene, World, MAX_BODIES, MAX_CONTROL_POINTS};
 
 type Result<T> = std::result::Result<T, SceneError>;
 
 /// See [`Scene::validate`].
 pub(crate) fn validate(scene: &Scene) -> Result<()> {
-    let [t0, t1] = &scene.span;
+    span(&scene.span)?;
+    body(&scene.a, &FieldPath::root("a"))?;
+    body(&scene.b, &FieldPath::root("b"))
+}
+
+/// See [`World::validate`].
+pub(crate) fn world(world: &World) -> Result<()> {
+    span(&world.span)?;
+    if world.bodies.len() > MAX_BODIES {
+        return Err(SceneError::TooLarge {
+            field: "body".into(),
+            limit: Limit::Bodies,
+        });
+    }
+    let mut seen = std::collections::HashMap::new();
+    for (i, b) in world.bodies.iter().enumerate() {
+        let path = FieldPath::body(i, &b.name);
+        let name_error = |first| SceneError::Name {
+            field: path.key("name").to_field(),
+            first,
+        };
+        if b.name.is_empty() {
+            return Err(name_error(None));
+        }
+        if let Some(first) = seen.insert(b.name.as_str(), i) {
+            return Err(name_error(Some(first)));
+        }
+        body(&b.body, &path)?;
+    }
+    Ok(())
+}
+
+/// `t0 < t1`.
+fn span([t0, t1]: &[Rat; 2]) -> Result<()> {
     if t0 >= t1 {
         return Err(SceneError::Span {
             t0: Box::new(t0.clone()),
             t1: Box::new(t1.clone()),
         });
     }
-    body(&scene.a, &FieldPath::root("a"))?;
-    body(&scene.b, &FieldPath::root("b"))
+    Ok(())
 }
 
 /// A curve at `path` has `n` control points: between 1 and

@@ -4,7 +4,7 @@
 use crate::{Limit, Scene, SceneError, TomlType, MAX_INPUT_BYTES};
 
 /// The variant's name, to compare variants without their payloads.
-fn variant(e: &SceneError) -> &'static str {
+pub(crate) fn variant(e: &SceneError) -> &'static str {
     match e {
         SceneError::NotToml { .. } => "NotToml",
         SceneError::Missing { .. } => "Missing",
@@ -20,6 +20,10 @@ fn variant(e: &SceneError) -> &'static str {
         SceneError::ZeroAxis { .. } => "ZeroAxis",
         SceneError::TooLarge { .. } => "TooLarge",
         SceneError::UnsupportedFormat { .. } => "UnsupportedFormat",
+        SceneError::NotJson { .. } => "NotJson",
+        SceneError::JsonFloat { .. } => "JsonFloat",
+        SceneError::JsonNull { .. } => "JsonNull",
+        SceneError::Name { .. } => "Name",
     }
 }
 

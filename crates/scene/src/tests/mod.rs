@@ -5,6 +5,7 @@ mod fuzz;
 mod invalid;
 mod valid;
 mod validate;
+mod world;
 
 use crate::{Rat, Scene};
 
