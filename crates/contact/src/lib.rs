@@ -319,16 +319,15 @@ pub fn from_quadrics<S: Scalar>(
     let (point, _) = krawczyk(a, b, point, lambda);
     // ∇(XᵀAX) and −∇(XᵀBX) at X*, first three components (halved): both
     // point along A's outward normal at a touch.
-    let gradient = |q: &Mat4<S>, sign: i64| -> [S; 3] {
+    let gradient = |q: &Mat4<S>| -> [S; 3] {
         std::array::from_fn(|r| {
-            let g = (0..3).fold(q[r][3].clone(), |acc, c| {
+            (0..3).fold(q[r][3].clone(), |acc, c| {
                 acc.plus(&q[r][c].times(&point[c]))
-            });
-            g.times(&S::from_i64(sign))
+            })
         })
     };
-    let from_a = unit_max(&gradient(a, 1));
-    let from_b = unit_max(&gradient(b, -1));
+    let from_a = unit_max(&gradient(a));
+    let from_b = unit_max(&gradient(b).map(|g| g.negated()));
     let normal = match (from_a, from_b) {
         (Ok((na, ka)), Ok((nb, kb))) => {
             // A's normal, unless B's is narrower by more than 2^20 (a very
