@@ -139,19 +139,27 @@ trait Num: Clone + PartialOrd {
     const STEPS: usize;
 }
 
+/// `add`, `sub`, `mul`, `div` of [`Num`] by the type's operators on
+/// references.
+macro_rules! arithmetic_by_operators {
+    () => {
+        fn add(&self, o: &Self) -> Self {
+            self + o
+        }
+        fn sub(&self, o: &Self) -> Self {
+            self - o
+        }
+        fn mul(&self, o: &Self) -> Self {
+            self * o
+        }
+        fn div(&self, o: &Self) -> Self {
+            self / o
+        }
+    };
+}
+
 impl Num for f64 {
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn div(&self, o: &Self) -> Self {
-        self / o
-    }
+    arithmetic_by_operators!();
     fn int(v: i64) -> Self {
         v as f64
     }
@@ -168,18 +176,7 @@ impl Num for f64 {
 }
 
 impl Num for Rat {
-    fn add(&self, o: &Self) -> Self {
-        self + o
-    }
-    fn sub(&self, o: &Self) -> Self {
-        self - o
-    }
-    fn mul(&self, o: &Self) -> Self {
-        self * o
-    }
-    fn div(&self, o: &Self) -> Self {
-        self / o
-    }
+    arithmetic_by_operators!();
     fn int(v: i64) -> Self {
         Rat::from(v)
     }
