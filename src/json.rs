@@ -1,10 +1,10 @@
 //! The `--json` result of the contract (`scene-format.md`, format 1).
 
 use ccd_arith::Rat;
-use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome};
+use ccd_timeline::{Box3, Gap, Geometry, Instant, Outcome, Segment};
 
 use crate::WorldOutcome;
-use serde_json::{json, Value};
+use serde_json::{json, Map, Value};
 
 /// Decimals of `approx`: 12, plus one per leading zero of the span's width.
 fn approx_digits(span: &[Rat; 2]) -> u32 {
@@ -38,34 +38,55 @@ fn boxed(b: &Box3, certified: bool) -> Value {
     json!({"lo": strings(&b.lo), "hi": strings(&b.hi), "approx": b.approx(d), "certified": certified})
 }
 
+/// The keys of `g` in `obj`, each named with `prefix`: `point` and
+/// `normal` (null, with a `point_note`, when there is no single point).
+fn insert_geometry(obj: &mut Map<String, Value>, prefix: &str, g: &Geometry) {
+    let key = |k: &str| format!("{prefix}{k}");
+    match g {
+        Geometry::Point {
+            point,
+            normal,
+            certified,
+        } => {
+            obj.insert(key("point"), boxed(point, *certified));
+            obj.insert(key("normal"), boxed(normal, *certified));
+        }
+        Geometry::NotASinglePoint => {
+            obj.insert(key("point"), Value::Null);
+            obj.insert(key("normal"), Value::Null);
+            obj.insert(key("point_note"), "not a single point".into());
+        }
+        Geometry::Unknown { reason } => {
+            obj.insert(key("point"), Value::Null);
+            obj.insert(key("normal"), Value::Null);
+            obj.insert(key("point_note"), format!("not computed: {reason}").into());
+        }
+    }
+}
+
 /// A contact's time object with its `point` and `normal` (null, with a
 /// `point_note`, when there is no single point).
 fn contact(i: &Instant, g: Option<&Geometry>, digits: u32) -> Value {
     let mut v = instant(i, digits);
     if let (Some(g), Some(obj)) = (g, v.as_object_mut()) {
-        match g {
-            Geometry::Point {
-                point,
-                normal,
-                certified,
-            } => {
-                obj.insert("point".into(), boxed(point, *certified));
-                obj.insert("normal".into(), boxed(normal, *certified));
-            }
-            Geometry::NotASinglePoint => {
-                obj.insert("point".into(), Value::Null);
-                obj.insert("normal".into(), Value::Null);
-                obj.insert("point_note".into(), "not a single point".into());
-            }
-            Geometry::Unknown { reason } => {
-                obj.insert("point".into(), Value::Null);
-                obj.insert("normal".into(), Value::Null);
-                obj.insert(
-                    "point_note".into(),
-                    format!("not computed: {reason}").into(),
-                );
-            }
-        }
+        insert_geometry(obj, "", g);
+    }
+    v
+}
+
+/// A timeline entry; a touch segment that is not an isolated contact gains
+/// `start_point`, `start_normal`, `end_point`, `end_normal` (or
+/// `start_point_note` / `end_point_note`).
+fn segment(seg: &Segment, ends: Option<&[Geometry; 2]>, digits: u32) -> Value {
+    let mut v = json!({
+        "state": seg.state.name(),
+        "start": instant(&seg.start, digits),
+        "end": instant(&seg.end, digits),
+        "certified": seg.certified,
+    });
+    if let (Some([start, end]), Some(obj)) = (ends, v.as_object_mut()) {
+        insert_geometry(obj, "start_", start);
+        insert_geometry(obj, "end_", end);
     }
     v
 }
@@ -90,18 +111,13 @@ pub fn to_json(outcome: &Outcome) -> Value {
         "span": [outcome.span[0].to_string(), outcome.span[1].to_string()],
         "collision_free": if outcome.undecided.is_some() { Value::Null } else { Value::Bool(outcome.collision_free) },
         "collision_free_reason": outcome.undecided,
-        "first_contact": outcome.first_contact.as_ref().map(|i| {
-            let k = outcome.contacts.iter().position(|c| c == i);
-            contact(i, k.and_then(|k| outcome.geometry.get(k)), d)
-        }),
+        "first_contact": outcome.first_contact.as_ref()
+            .map(|i| contact(i, outcome.first_contact_geometry(), d)),
         "contacts": outcome.contacts.iter().enumerate()
             .map(|(k, i)| contact(i, outcome.geometry.get(k), d)).collect::<Vec<_>>(),
-        "timeline": outcome.timeline.iter().map(|seg| json!({
-            "state": seg.state.name(),
-            "start": instant(&seg.start, d),
-            "end": instant(&seg.end, d),
-            "certified": seg.certified,
-        })).collect::<Vec<_>>(),
+        "timeline": outcome.timeline.iter().enumerate()
+            .map(|(k, seg)| segment(seg, outcome.segment_geometry.get(k).and_then(Option::as_ref), d))
+            .collect::<Vec<_>>(),
         "gaps": outcome.gaps.iter().map(gap).collect::<Vec<_>>(),
         "complete": outcome.complete,
         "certified": outcome.certified(),

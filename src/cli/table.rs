@@ -47,7 +47,31 @@ pub fn pair(out: &Outcome, options: &Options) -> String {
             let _ = writeln!(t, "  {:<9} proven {} at t = {}", "", w.state.name(), w.t);
         }
     };
-    for seg in &out.timeline {
+    let show = |b: &ccd_exact::Box3| b.approx(12).join(", ");
+    // The point and normal at one end of a touch segment, or one contact.
+    let geometry_lines = |t: &mut String, indent: &str, g: &Geometry| match g {
+        Geometry::Point {
+            point,
+            normal,
+            certified,
+        } => {
+            let mark = if *certified { "" } else { "  (NOT certified)" };
+            let _ = writeln!(
+                t,
+                "{indent}point  ≈ ({}){mark}  (box width {:.1e})\n{indent}normal ≈ ({})  (A's outward normal, largest component ±1)",
+                show(point),
+                point.width().to_f64(),
+                show(normal)
+            );
+        }
+        Geometry::NotASinglePoint => {
+            let _ = writeln!(t, "{indent}point: not a single point");
+        }
+        Geometry::Unknown { reason } => {
+            let _ = writeln!(t, "{indent}point: not computed ({reason})");
+        }
+    };
+    for (k, seg) in out.timeline.iter().enumerate() {
         while let Some(g) = gaps.next_if(|g| g.hi <= seg.start.lo) {
             gap_line(&mut t, g);
         }
@@ -59,6 +83,14 @@ pub fn pair(out: &Outcome, options: &Options) -> String {
             seg.end.approx(12),
             unproven(seg.certified)
         );
+        if let Some(Some([start, end])) = out.segment_geometry.get(k) {
+            t.push_str("            at the start:\n");
+            geometry_lines(&mut t, "              ", start);
+            if seg.start != seg.end {
+                t.push_str("            at the end:\n");
+                geometry_lines(&mut t, "              ", end);
+            }
+        }
     }
     for g in gaps {
         gap_line(&mut t, g);
@@ -77,29 +109,8 @@ pub fn pair(out: &Outcome, options: &Options) -> String {
             c.lo,
             c.hi
         );
-        match out.geometry.get(k) {
-            Some(Geometry::Point {
-                point,
-                normal,
-                certified,
-            }) => {
-                let mark = if *certified { "" } else { "  (NOT certified)" };
-                let show = |b: &ccd_exact::Box3| b.approx(12).join(", ");
-                let _ = writeln!(
-                    t,
-                    "    point  ≈ ({}){mark}  (box width {:.1e})\n    normal ≈ ({})  (A's outward normal, largest component ±1)",
-                    show(point),
-                    point.width().to_f64(),
-                    show(normal)
-                );
-            }
-            Some(Geometry::NotASinglePoint) => {
-                t.push_str("    point: not a single point\n");
-            }
-            Some(Geometry::Unknown { reason }) => {
-                let _ = writeln!(t, "    point: not computed ({reason})");
-            }
-            None => {}
+        if let Some(g) = out.geometry.get(k) {
+            geometry_lines(&mut t, "    ", g);
         }
     }
     match (&out.first_contact, &out.undecided) {

@@ -142,7 +142,7 @@ pub(crate) fn assemble<O: Oracle>(
     o: &O,
     opts: &Options,
     state0: Decided,
-    throughout: Option<Decided>,
+    throughout: Option<(Decided, &'static [Quantity])>,
     stop_early: bool,
     walk: Walk<O::Root>,
 ) -> Result<Outcome, CcdError> {
@@ -154,7 +154,7 @@ pub(crate) fn assemble<O: Oracle>(
     // A first-contact query that found a contact stops there (a gap it
     // stopped at may still be filled to t1 by the oracle's certificates).
     let at_contact = matches!(breaks.first(), Some(Break::Contact(..)));
-    if let Some(d) = throughout {
+    if let Some((d, _)) = throughout {
         items.push(Item::Segment(Segment {
             state: d.state,
             start: Instant::exact(d0.clone()),
@@ -251,9 +251,68 @@ pub(crate) fn assemble<O: Oracle>(
     } else {
         Vec::new()
     };
+    let segment_geometry = if opts.contact_geometry {
+        let zeros = throughout.map_or(walk.zeros, |(_, z)| z);
+        touch_segments(o, &merged, zeros, stop_early)
+    } else {
+        Vec::new()
+    };
     let mut outcome = verdicts(o, merged, stop_early, opts.first_contact_only && at_contact);
     outcome.geometry = geometry;
+    outcome.segment_geometry = segment_geometry;
     Ok(outcome)
+}
+
+/// The geometry at the ends of each segment of `items` that is a touch but
+/// not an isolated contact (`Outcome::segment_geometry`): a long touch
+/// segment, or the touch at `t0` where a first-contact query stopped
+/// (`stop_early`). Each end that is an exact instant is evaluated there
+/// ([`Oracle::geometry_at`]); the result is certified only where the
+/// segment's state is.
+fn touch_segments<O: Oracle>(
+    o: &O,
+    items: &[Item],
+    zeros: &[Quantity],
+    stop_early: bool,
+) -> Vec<Option<[Geometry; 2]>> {
+    let at = |i: &Instant, certified: bool| {
+        if i.lo != i.hi {
+            return Geometry::Unknown {
+                reason: "the end of the touch segment is not an exact instant".into(),
+            };
+        }
+        match o.geometry_at(&i.lo, zeros) {
+            Geometry::Point {
+                point,
+                normal,
+                certified: c,
+            } => Geometry::Point {
+                point,
+                normal,
+                certified: c && certified && i.certified,
+            },
+            other => other,
+        }
+    };
+    items
+        .iter()
+        .filter_map(|item| match item {
+            Item::Segment(s) => Some(s),
+            Item::Gap(_) => None,
+        })
+        .map(|s| {
+            let isolated = s.start == s.end && !stop_early;
+            (s.state == State::Touch && !isolated).then(|| {
+                let start = at(&s.start, s.certified);
+                let end = if s.end == s.start {
+                    start.clone()
+                } else {
+                    at(&s.end, s.certified)
+                };
+                [start, end]
+            })
+        })
+        .collect()
 }
 
 /// The first contact, the contacts, completeness and the collision verdict
@@ -363,5 +422,6 @@ fn verdicts<O: Oracle>(o: &O, items: Vec<Item>, stop_early: bool, stopped: bool)
         complete,
         stats: Stats::default(),
         geometry: Vec::new(),
+        segment_geometry: Vec::new(),
     }
 }

@@ -137,6 +137,13 @@ pub trait Oracle {
     /// at `instant`, in the parameter), the quantities `zeros` vanishing
     /// there.
     fn geometry(&self, r: &mut Self::Root, zeros: &[Quantity], instant: &Instant) -> Geometry;
+    /// The contact point and normal at the rational parameter `x`, where
+    /// the bodies touch without an isolated contact to read it from (an end
+    /// of a touching-throughout segment, or `t0` where a first-contact
+    /// query stops); the quantities `zeros` vanish identically on the span
+    /// (`sr11 ≡ 0` decides case (2b) of Theorem 3.10). Evaluated at the
+    /// point `x` itself: exactly on the exact path.
+    fn geometry_at(&self, x: &Rat, zeros: &[Quantity]) -> Geometry;
     /// The state a sample between contacts gave `Touch`, which Theorem 5.1
     /// rules out: the arithmetic's answer (an error on the exact path).
     fn touch_between_contacts(&self, x: &Rat, d: Decided) -> Result<Decided, CcdError>;

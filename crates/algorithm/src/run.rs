@@ -52,8 +52,9 @@ fn touch_at<O: Oracle>(o: &O, r: &mut O::Root, zeros: &[Quantity]) -> crate::Pos
 enum Plan {
     /// The roots of `q`, at which the quantities `zeros` vanish.
     Roots(Quantity, &'static [Quantity]),
-    /// One state on the whole span (Theorems 5.5, 5.6).
-    Throughout(Decided),
+    /// One state on the whole span (Theorems 5.5, 5.6), the quantities
+    /// vanishing identically.
+    Throughout(Decided, &'static [Quantity]),
     /// The whole span undecided, and why.
     Undecided(&'static str),
 }
@@ -72,13 +73,16 @@ fn plan<O: Oracle>(o: &mut O, state0: Decided, stats: &mut Stats) -> Plan {
             Vanishing::Not(delta) => {
                 let at = delta.map(|d| state_at(o, &d));
                 let plan = match at {
-                    Some(d) if d.state == State::Touch => Plan::Throughout(d),
+                    Some(d) if d.state == State::Touch => Plan::Throughout(d, &[Quantity::Sr0]),
                     _ => Plan::Roots(Quantity::Sr11, &[Quantity::Sr0, Quantity::Sr11]),
                 };
                 (Branch::Sr11, plan)
             }
             // Theorem 5.6: the state at t0 holds throughout.
-            Vanishing::Identically => (Branch::Throughout, Plan::Throughout(state0)),
+            Vanishing::Identically => (
+                Branch::Throughout,
+                Plan::Throughout(state0, &[Quantity::Sr0, Quantity::Sr11]),
+            ),
             Vanishing::Unknown => (
                 Branch::Sr11Undecided,
                 Plan::Undecided("sr11 neither proven nonzero at a sample nor identically zero"),
@@ -213,7 +217,7 @@ pub fn run<O: Oracle>(mut o: O, opts: &Options) -> Result<Outcome, CcdError> {
             o.prepare()?;
         }
         match plan(&mut o, state0, &mut stats) {
-            Plan::Throughout(d) => throughout = Some(d),
+            Plan::Throughout(d, zeros) => throughout = Some((d, zeros)),
             Plan::Undecided(why) => {
                 let [d0, d1] = o.domain().clone();
                 walk.push(Break::Gap(d0.clone(), d1.clone(), why), &d0, &d1);

@@ -34,7 +34,10 @@
 //! components: it points out of `A`, into `B`. It is reported divided by
 //! the magnitude of its largest component (∞-norm 1; that component is
 //! exactly `±1`), a scale that does not depend on the arbitrary positive
-//! factor of `A`.
+//! factor of `A`. At a touch `−∇(XᵀBX)` points the same way; where its
+//! enclosure is narrower by more than `2^20` than `A`'s (a needle or disc
+//! `A` of extreme radius ratio, whose curvature multiplies the point box's
+//! width), the normal is enclosed from it instead.
 
 #![warn(missing_docs)]
 
@@ -315,28 +318,62 @@ pub fn from_quadrics<S: Scalar>(
             .ok_or(ContactError::Undecided("adj(M)[3][j]"))
     })?;
     let (point, _) = krawczyk(a, b, point, lambda);
-    let gradient: [S; 3] = std::array::from_fn(|r| {
-        (0..3).fold(a[r][3].clone(), |acc, c| {
-            acc.plus(&a[r][c].times(&point[c]))
+    // ∇(XᵀAX) and −∇(XᵀBX) at X*, first three components (halved): both
+    // point along A's outward normal at a touch.
+    let gradient = |q: &Mat4<S>| -> [S; 3] {
+        std::array::from_fn(|r| {
+            (0..3).fold(q[r][3].clone(), |acc, c| {
+                acc.plus(&q[r][c].times(&point[c]))
+            })
         })
-    });
-    let k = argmax(&gradient);
-    let sign = nonzero(&gradient[k], "the normal")?;
-    let scale = if sign > 0 {
-        gradient[k].clone()
-    } else {
-        gradient[k].negated()
     };
-    let normal = try_array(|i| {
+    let from_a = unit_max(&gradient(a));
+    let from_b = unit_max(&gradient(b).map(|g| g.negated()));
+    let normal = match (from_a, from_b) {
+        (Ok((na, ka)), Ok((nb, kb))) => {
+            // A's normal, unless B's is narrower by more than 2^20 (a very
+            // thin or flat A, whose large curvature widens its gradient's
+            // box): then B's, or, scaled by the same component, the common
+            // part of both enclosures of the same vector.
+            let wide = |n: &[S; 3]| n.iter().map(S::estimate_width).fold(0.0, f64::max);
+            if wide(&na) <= wide(&nb) * NORMAL_FROM_B {
+                na
+            } else if ka == kb {
+                try_array(|i| Ok(nb[i].meet(&na[i]).unwrap_or_else(|| nb[i].clone())))?
+            } else {
+                nb
+            }
+        }
+        (Ok((na, _)), Err(_)) => na,
+        (Err(_), Ok((nb, _))) => nb,
+        (Err(e), Err(_)) => return Err(e),
+    };
+    Ok(Enclosed { point, normal })
+}
+
+/// How much narrower `−∇B`'s normal box must be than `∇A`'s to replace
+/// it ([`from_quadrics`]): `2^20`.
+const NORMAL_FROM_B: f64 = (1u64 << 20) as f64;
+
+/// `g / |g_k|` with `g_k` proven nonzero (`k` the component of largest
+/// estimated magnitude), and `k`; that component is exactly `±1`.
+fn unit_max<S: Scalar>(g: &[S; 3]) -> Result<([S; 3], usize), ContactError> {
+    let k = argmax(g);
+    let sign = nonzero(&g[k], "the normal")?;
+    let scale = if sign > 0 {
+        g[k].clone()
+    } else {
+        g[k].negated()
+    };
+    let n = try_array(|i| {
         if i == k {
             Ok(S::from_i64(sign as i64))
         } else {
-            gradient[i]
-                .divide(&scale)
+            g[i].divide(&scale)
                 .ok_or(ContactError::Undecided("the normal"))
         }
     })?;
-    Ok(Enclosed { point, normal })
+    Ok((n, k))
 }
 
 /// Tightens the enclosures `x0 ∋ x*`, `lambda ∋ λ*` with Krawczyk's

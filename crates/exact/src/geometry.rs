@@ -5,19 +5,31 @@
 use crate::signs::{model, Coefficients};
 
 use ccd_arith::{Int, Rat};
-use ccd_contact::{enclose, from_quadrics, Case, Goal};
+use ccd_contact::{enclose, from_quadrics, Case, ContactError, Goal};
 use ccd_motion::PlacedQuadric;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, SignModel};
-use ccd_subres::Quantity;
+use ccd_subres::{closed_form, Quantity};
 use ccd_timeline::{Box3, Geometry};
 use std::rc::Rc;
 
 /// The exact path's stages, cheapest first: how far to narrow the
 /// contact's enclosure first (a factor `2^−bits`) and the precisions then
 /// tried (53: `f64` intervals). The exact rational evaluation at a rational
-/// instant comes after the `f64` stages.
-const STAGES: [(i64, &[u32]); 4] = [(0, &[53]), (20, &[53]), (64, &[128]), (64, &[256, 512])];
+/// instant comes after the `f64` stages. The last three serve extreme
+/// radius ratios (`ratio-needle-k0064-*`: radii 1 and 10⁻⁶⁴), where the
+/// closed forms cancel so heavily that `sr11` is separated from 0 only on
+/// an enclosure of the instant some 10⁻¹⁶⁰ wide, at 4096 bits; they run
+/// only when every cheaper stage missed the goal.
+const STAGES: [(i64, &[u32]); 7] = [
+    (0, &[53]),
+    (20, &[53]),
+    (64, &[128]),
+    (64, &[256, 512]),
+    (128, &[1024]),
+    (256, &[2048]),
+    (512, &[4096]),
+];
 
 /// What the exact path needs to compute the geometry of its contacts.
 pub(crate) struct Bodies<'a> {
@@ -60,6 +72,40 @@ impl<'a> Bodies<'a> {
             normal: Box3::point(e.normal),
             certified: true,
         })
+    }
+
+    /// The certified geometry at the rational instant `u` where the bodies
+    /// touch (an end of a touch segment, or `t0`): the case of Theorem
+    /// 3.10(2) from the exact sign of `sr11` at `u`, then the exact point
+    /// ([`Bodies::at_rational`]), or, when `λ*` is not rational, the
+    /// enclosures at the point instant `u` through the same precisions as
+    /// [`Bodies::exact`]. A kernel of `λ*·A + B` that is exactly not
+    /// one-dimensional is [`Geometry::NotASinglePoint`].
+    pub(crate) fn at_touch(&self, u: &Rat) -> Geometry {
+        let (qa, qb) = (self.a.quadric_at(u), self.b.quadric_at(u));
+        let f = ccd_quadric::characteristic(&qa, &qb);
+        let case = match closed_form(&f, Quantity::Sr11) {
+            Some(s) if !s.is_zero() => Case::Simple,
+            _ => Case::TwoDouble,
+        };
+        let rat = |m: [[Int; 4]; 4]| m.map(|row| row.map(Rat::from_int));
+        match from_quadrics(&rat(qa), &rat(qb), case) {
+            Ok(e) => {
+                return Geometry::Point {
+                    point: Box3::point(e.point),
+                    normal: Box3::point(e.normal),
+                    certified: true,
+                }
+            }
+            Err(ContactError::Kernel) => return Geometry::NotASinglePoint,
+            Err(_) => {}
+        }
+        let t = self.time(u);
+        let (a, b, span) = (&self.scene.a, &self.scene.b, &self.scene.span);
+        let mut precisions: Vec<u32> = STAGES.iter().flat_map(|(_, p)| p.iter().copied()).collect();
+        precisions.dedup();
+        enclose((a, b, span), (&t, &t), case, &self.goal, true, &precisions)
+            .unwrap_or_else(ccd_contact::failed)
     }
 
     /// The certified geometry at the contact `root` (an isolated external

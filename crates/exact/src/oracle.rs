@@ -323,6 +323,10 @@ impl Oracle for Exact<'_> {
         each!(r, x => self.bodies.exact(x, self.coefficients(), zeros))
     }
 
+    fn geometry_at(&self, u: &Rat, _zeros: &[Quantity]) -> Geometry {
+        self.bodies.at_touch(u)
+    }
+
     fn touch_between_contacts(&self, u: &Rat, _d: Decided) -> Result<Decided, CcdError> {
         Err(CcdError::Internal(format!(
             "touch at sample u = {u} between contacts"

@@ -190,12 +190,18 @@ impl Oracle for Float<'_> {
     /// An `f64` estimate at the contact's midpoint (case (2b) for the roots
     /// of `sr11`).
     fn geometry(&self, _c: &mut Candidate, zeros: &[Quantity], instant: &Instant) -> Geometry {
+        self.geometry_at(&instant.midpoint(), zeros)
+    }
+
+    /// An `f64` estimate at `u` (case (2b) where `sr11` vanishes
+    /// identically).
+    fn geometry_at(&self, u: &Rat, zeros: &[Quantity]) -> Geometry {
         let Some((a, b)) = self.bodies else {
             return Geometry::Unknown {
                 reason: "no bodies given".into(),
             };
         };
-        let t = self.time(&instant.midpoint());
+        let t = self.time(u);
         ccd_contact::estimate(a, b, &self.span, &t, zeros.contains(&Quantity::Sr11))
     }
 

@@ -354,6 +354,37 @@ fn midpoint_state(o: &Intervals<'_>, t: &Rat) -> State {
     State::from(classify(&s))
 }
 
+impl Intervals<'_> {
+    /// The contact geometry enclosed over the time enclosure `c` (the
+    /// quantities `zeros` vanish there): the case from `sr11`'s enclosure
+    /// (case (2b), certified only when `sr11` is known to vanish), then
+    /// [`enclose`] at every precision.
+    fn enclose_at(&self, zeros: &[Quantity], c: &Instant) -> Geometry {
+        let (a, b) = self.scene;
+        let goal = Goal::new(a, b, self.digits);
+        let t = Interval::from_rat(&c.lo).hull(&Interval::from_rat(&c.hi));
+        let (_, qa, qb) = ccd_enclosure::centred_quadrics(a, b, &self.span, &t, 53);
+        let f = ccd_quadric::characteristic(&qa, &qb);
+        let sr11_nonzero = closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
+        let (case, proven) = if sr11_nonzero {
+            (Case::Simple, true)
+        } else {
+            (Case::TwoDouble, zeros.contains(&Quantity::Sr11))
+        };
+        let certified = c.certified && proven;
+        let all = &ccd_contact::PRECISIONS;
+        enclose(
+            (a, b, &self.span),
+            (&c.lo, &c.hi),
+            case,
+            &goal,
+            certified,
+            all,
+        )
+        .unwrap_or_else(ccd_contact::failed)
+    }
+}
+
 impl Oracle for Intervals<'_> {
     type Root = IntervalRoot;
     const PATH: Path = Path::Interval;
@@ -525,28 +556,12 @@ impl Oracle for Intervals<'_> {
     /// `sr0 ≡ 0` proven by structure; otherwise, and for an uncertified
     /// instant, the boxes are computed but marked `certified: false`.
     fn geometry(&self, _r: &mut IntervalRoot, zeros: &[Quantity], c: &Instant) -> Geometry {
-        let (a, b) = self.scene;
-        let goal = Goal::new(a, b, self.digits);
-        let t = Interval::from_rat(&c.lo).hull(&Interval::from_rat(&c.hi));
-        let (_, qa, qb) = ccd_enclosure::centred_quadrics(a, b, &self.span, &t, 53);
-        let f = ccd_quadric::characteristic(&qa, &qb);
-        let sr11_nonzero = closed_form(&f, Quantity::Sr11).is_some_and(|s| !s.contains_zero());
-        let (case, proven) = if sr11_nonzero {
-            (Case::Simple, true)
-        } else {
-            (Case::TwoDouble, zeros.contains(&Quantity::Sr11))
-        };
-        let certified = c.certified && proven;
-        let all = &ccd_contact::PRECISIONS;
-        enclose(
-            (a, b, &self.span),
-            (&c.lo, &c.hi),
-            case,
-            &goal,
-            certified,
-            all,
-        )
-        .unwrap_or_else(ccd_contact::failed)
+        self.enclose_at(zeros, c)
+    }
+
+    /// At the point instant `t` (its time parameter is time itself).
+    fn geometry_at(&self, t: &Rat, zeros: &[Quantity]) -> Geometry {
+        self.enclose_at(zeros, &Instant::exact(t.clone()))
     }
 
     /// A sample is never at a candidate root; an enclosure that allows a

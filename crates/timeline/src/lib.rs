@@ -295,9 +295,33 @@ pub struct Outcome {
     /// The contact point and normal of each entry of `contacts`, in the
     /// same order (empty when not computed).
     pub geometry: Vec<Geometry>,
+    /// The contact point and normal at the start and at the end of each
+    /// entry of `timeline` that is a touch but not an isolated contact (a
+    /// touching-throughout segment, Theorems 5.5 and 5.6, or the touch at
+    /// `t0` where a first-contact query stops), in the same order as
+    /// `timeline`; `None` for every other segment (empty when not
+    /// computed). An end that is not an exact instant gets
+    /// [`Geometry::Unknown`].
+    pub segment_geometry: Vec<Option<[Geometry; 2]>>,
 }
 
 impl Outcome {
+    /// The point and normal at the first contact when it is a touch: the
+    /// geometry of the isolated contact it is, or of the start of the
+    /// touch segment it starts (`None` otherwise, or when not computed).
+    pub fn first_contact_geometry(&self) -> Option<&Geometry> {
+        let first = self.first_contact.as_ref()?;
+        if let Some(k) = self.contacts.iter().position(|c| c == first) {
+            return self.geometry.get(k);
+        }
+        let same = |i: &Instant| i.lo == first.lo && i.hi == first.hi;
+        self.timeline
+            .iter()
+            .zip(&self.segment_geometry)
+            .find(|(s, g)| g.is_some() && same(&s.start))
+            .and_then(|(_, g)| g.as_ref().map(|[start, _]| start))
+    }
+
     /// Whether everything reported is proven: every segment and instant
     /// certified, no [`Gap`] and no [`Outcome::undecided`] verdict. (It does
     /// not say the timeline is complete: a first-contact query is certified
