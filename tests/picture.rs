@@ -136,7 +136,11 @@ fn the_cli_writes_both_pictures_and_names_a_missing_file_name() {
         .contains("const DATA"));
     let out = Command::new(bin).args([&scene, "--svg"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("`--svg` needs a file name"));
+    let message = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        message.contains("--svg <FILE>") && message.contains("value is required"),
+        "{message}"
+    );
     let bad = dir.join("no-such-dir").join("x.svg");
     let out = Command::new(bin)
         .args([&scene, "--svg"])
