@@ -1,4 +1,4 @@
-//! Pictures of a `ccd-exact` query, from its [`Scene`] and [`Outcome`]:
+//! Pictures of a `ccd-exact` query, from its [`ccd_scene::Scene`] and [`ccd_timeline::Outcome`]:
 //!
 //! - [`svg`]: the timeline as a strip over the span (separate / touch /
 //!   overlap coloured, undecided gaps grey, each contact marked with its
