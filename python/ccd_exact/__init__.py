@@ -21,6 +21,15 @@ as a scene file's text (``Scene(a, b).to_toml()``), so ``ccd-exact FILE``
 gives the same answer, and a bad scene raises ``SceneError`` (a
 ``ValueError``) naming the field, e.g. ``a.radii[0]``.
 
+A **world** of many named bodies (a world file's ``[[body]]`` tables,
+docs/worlds.md) is answered by ``collide_world({"left": a, "right": b,
+...})`` or ``collide_world_toml(text)``: a certified broad phase, then the
+exact pair query on every candidate pair on all cores::
+
+    >>> w = ccd.collide_world({"left": a, "right": b, "far": ccd.Ellipsoid([1, 1, 1], ccd.Static([50, 0, 0]))})
+    >>> w.colliding, w.first_contact.pair, w.broad_phase.pruned
+    ([('left', 'right')], ('left', 'right'), 2)
+
 ``from ccd_exact import fcl`` is a python-fcl-shaped entry
 (``continuousCollide`` over ``Ellipsoid``, ``Transform``,
 ``CollisionObject``).
@@ -45,12 +54,14 @@ from ._scene import (
     Static,
     Translation,
 )
+from ._world import BroadPhase, World, WorldContact, WorldPair, WorldResult
 
 __all__ = [
-    "Affine", "Box", "Contact", "EffortError", "Ellipsoid", "Fraction", "Gap",
-    "Helical", "Motion", "Number", "Result", "Rigid", "Scene", "SceneError",
-    "Segment", "Static", "Time", "Translation", "collide", "collide_json",
-    "collide_many", "collide_toml",
+    "Affine", "Box", "BroadPhase", "Contact", "EffortError", "Ellipsoid",
+    "Fraction", "Gap", "Helical", "Motion", "Number", "Result", "Rigid",
+    "Scene", "SceneError", "Segment", "Static", "Time", "Translation", "World",
+    "WorldContact", "WorldPair", "WorldResult", "collide", "collide_json",
+    "collide_many", "collide_toml", "collide_world", "collide_world_toml",
 ]
 __version__: str = _native.__version__
 
@@ -116,8 +127,10 @@ def collide(
 
 
 def collide_toml(text: str, **options: Any) -> Result:
-    """``collide`` on a scene file's text (TOML, docs/scene-format.md), with
-    the same keyword options as ``collide``."""
+    """``collide`` on a pair scene file's text (TOML, docs/scene-format.md),
+    with the same keyword options as ``collide``. A world file (``[[body]]``
+    tables) raises ``SceneError`` (field ``body``) naming
+    ``collide_world_toml``, which answers it."""
     return _run(Scene.from_toml(text), _options(**options))
 
 
@@ -138,10 +151,10 @@ def collide_many(
     Each item is a ``Scene``, an ``(a, b)`` or ``(a, b, span)`` tuple, or a
     scene dict. Keyword options as ``collide``. The first invalid scene (in
     order) raises, its index in the message (``pairs[3]: field …``).
-    (Worlds of many bodies are not reachable from Python yet.)
+    For many bodies that may all meet each other, a world
+    (``collide_world``) proves most pairs separate without querying them.
     """
-    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int) or threads < 1):
-        raise ValueError(f"option `threads`: expected None or a whole number >= 1, found {threads!r}")
+    _threads(threads)
     opts = _options(**options)
     scenes = []
     for i, item in enumerate(pairs):
@@ -152,6 +165,57 @@ def collide_many(
     texts = [s.to_toml() for s in scenes]
     queries = _native.run_many(texts, threads=threads, **opts)
     return [Result(q, t, opts) for q, t in zip(queries, texts)]
+
+
+def collide_world(
+    bodies: Any,
+    span: Sequence[Number] = (0, 1),
+    threads: Optional[int] = None,
+    **options: Any,
+) -> WorldResult:
+    """Every pair of a world of many moving ellipsoids over ``span``: which
+    pairs ever touch or overlap, when the world's first contact is and
+    between whom, and each candidate pair's full result.
+
+    Args:
+        bodies: ``{name: Ellipsoid}`` (in its order) or an iterable of
+            ``(name, Ellipsoid)`` pairs; names are non-empty and unique
+            (errors name the body: ``body[3] "arm-2".motion.center[1]``).
+        span: the time interval, ``t0 < t1``.
+        threads: worker threads for the pairs (default: one per core).
+        **options: as ``collide``; ``first_contact=True`` finds the world's
+            earliest contact and queries only the pairs that search needs.
+
+    Returns:
+        a ``WorldResult``; ``to_json()`` is what ``ccd-exact WORLD --json``
+        prints for ``World(bodies, span).to_toml()``.
+
+    Raises:
+        SceneError, ValueError, EffortError: as ``collide`` (``EffortError``
+        also when more pairs than the broad phase's cap of 500000 cannot
+        be proven separate).
+    """
+    return _run_world(World(bodies, span), threads, options)
+
+
+def collide_world_toml(text: str, threads: Optional[int] = None, **options: Any) -> WorldResult:
+    """``collide_world`` on a world file's text (TOML with ``[[body]]``
+    tables, docs/scene-format.md), the same keyword options. A pair file
+    (``[a]``, ``[b]``) raises ``SceneError`` (field ``body``) naming
+    ``collide_toml``."""
+    return _run_world(World.from_toml(text), threads, options)
+
+
+def _threads(threads: Any) -> None:
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int) or threads < 1):
+        raise ValueError(f"option `threads`: expected None or a whole number >= 1, found {threads!r}")
+
+
+def _run_world(world: World, threads: Optional[int], options: dict) -> WorldResult:
+    _threads(threads)
+    opts = _options(**options)
+    text = world.to_toml()
+    return WorldResult(_native.run_world_toml(text, threads=threads, **opts), text, opts, threads)
 
 
 def _run(scene: Scene, opts: dict) -> Result:

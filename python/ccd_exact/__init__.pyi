@@ -138,7 +138,48 @@ class Result:
     def to_svg(self, title: str = ...) -> str: ...
     def to_html(self, title: str = ...) -> str: ...
     def plot(self, path: Optional[str] = ..., title: str = ...) -> str: ...
-    def scene_toml(self) -> str: ...
+    def scene_toml(self) -> Optional[str]: ...
+
+Bodies = Union[Mapping[str, Union[Ellipsoid, Mapping[str, Any]]], Iterable[Tuple[str, Union[Ellipsoid, Mapping[str, Any]]]]]
+
+class World:
+    def __init__(self, bodies: Bodies, span: Sequence[Number] = ...) -> None: ...
+    @classmethod
+    def from_toml(cls, text: str) -> World: ...
+    def to_toml(self) -> str: ...
+
+class WorldContact(Time):
+    pair: Tuple[str, str]
+
+class BroadPhase:
+    candidates: int
+    pruned: int
+    box_overlaps: int
+    slices: int
+    def __init__(self, candidates: int, pruned: int, box_overlaps: int, slices: int) -> None: ...
+
+class WorldPair:
+    a: str
+    b: str
+    result: Optional[Result]
+    error: Optional[str]
+    @property
+    def names(self) -> Tuple[str, str]: ...
+
+class WorldResult:
+    span: Tuple[Fraction, Fraction]
+    bodies: List[str]
+    colliding: List[Tuple[str, str]]
+    undecided: List[Tuple[str, str]]
+    first_contact: Optional[WorldContact]
+    pairs: List[WorldPair]
+    broad_phase: BroadPhase
+    complete: bool
+    certified: bool
+    def pair(self, a: str, b: str) -> Optional[WorldPair]: ...
+    def to_json(self) -> str: ...
+    def to_dict(self) -> Dict[str, Any]: ...
+    def world_toml(self) -> str: ...
 
 def collide(
     a: Ellipsoid,
@@ -169,3 +210,22 @@ def collide_many(
     arithmetic: str = ...,
     geometry: bool = ...,
 ) -> List[Result]: ...
+def collide_world(
+    bodies: Bodies,
+    span: Sequence[Number] = ...,
+    threads: Optional[int] = ...,
+    *,
+    first_contact: bool = ...,
+    digits: int = ...,
+    arithmetic: str = ...,
+    geometry: bool = ...,
+) -> WorldResult: ...
+def collide_world_toml(
+    text: str,
+    threads: Optional[int] = ...,
+    *,
+    first_contact: bool = ...,
+    digits: int = ...,
+    arithmetic: str = ...,
+    geometry: bool = ...,
+) -> WorldResult: ...

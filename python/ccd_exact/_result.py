@@ -133,7 +133,7 @@ class Result:
          "timeline", "gaps", "complete", "certified", "stats")
     )
 
-    def __init__(self, query: Any, scene_toml: str, options: Dict[str, Any]) -> None:
+    def __init__(self, query: Any, scene_toml: Optional[str], options: Dict[str, Any]) -> None:
         self._query = query
         self._scene_toml = scene_toml
         self._options = dict(options)
@@ -188,6 +188,7 @@ class Result:
 
     def _native(self) -> Any:
         if self._query is None:  # unpickled: answer the same query again
+            assert self._scene_toml is not None
             from . import _native
 
             self._query = _native.run_toml(self._scene_toml, **self._options)
@@ -218,12 +219,17 @@ class Result:
     def _repr_svg_(self) -> str:
         return self.to_svg()
 
-    def scene_toml(self) -> str:
-        """The scene file text that was run (``ccd-exact`` reads it too)."""
+    def scene_toml(self) -> Optional[str]:
+        """The scene file text that was run (``ccd-exact`` reads it too);
+        ``None`` for a pair of a world (``WorldResult.world_toml()`` is
+        the world's)."""
         return self._scene_toml
 
     def __reduce__(self) -> Any:
-        return (_unpickle, (self._json, self._scene_toml, self._options))
+        # A pair of a world keeps its world (which pickles as its text and
+        # JSON), for the pictures; a pair query is answered again from its text.
+        world_pair = self._query if self._scene_toml is None else None
+        return (_unpickle, (self._json, self._scene_toml, self._options, world_pair))
 
     def __repr__(self) -> str:
         if self.first_contact is not None:
@@ -259,9 +265,9 @@ class Result:
         return "\n".join(lines)
 
 
-def _unpickle(text: str, scene_toml: str, options: Dict[str, Any]) -> Result:
+def _unpickle(text: str, scene_toml: Optional[str], options: Dict[str, Any], query: Any = None) -> Result:
     r = Result.__new__(Result)
-    r._query = None
+    r._query = query
     r._scene_toml = scene_toml
     r._options = dict(options)
     r._json = text

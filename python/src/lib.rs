@@ -4,16 +4,21 @@
 //! scene's TOML text (every number as exact text), so scenes reach the
 //! engine through the same parser and the same field-naming errors as the
 //! CLI. Here: run queries with the GIL released (one, or many on rayon's
-//! threads in the order given), and hand back each answer as an opaque
-//! [`Query`] whose JSON is the CLI's `--json` text. A panic never crosses
-//! into Python: it becomes a `RuntimeError`.
+//! threads in the order given, or a world of many bodies), and hand back
+//! each answer as an opaque [`Query`] or [`WorldQuery`] whose JSON is the
+//! CLI's `--json` text. A panic never crosses into Python: it becomes a
+//! `RuntimeError`.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::Instant;
 
-use ccd_exact::{run, to_json, Arithmetic, CcdError, Options, Outcome, Scene};
+use ccd_broad::BroadError;
+use ccd_exact::{
+    run, run_world, to_json, world_to_json, Arithmetic, CcdError, Options, Outcome, Scene,
+    SceneFile, World, WorldOutcome,
+};
 use ccd_scene::SceneError;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 
@@ -28,7 +33,7 @@ struct Query {
 impl Query {
     /// The result as the CLI's `--json` prints it (pretty, no final newline).
     fn json(&self) -> String {
-        serde_json::to_string_pretty(&to_json(&self.outcome)).unwrap_or_default()
+        pretty(&to_json(&self.outcome))
     }
     /// The SVG picture (timeline strip and contact sections).
     #[pyo3(signature = (title = ""))]
@@ -39,6 +44,72 @@ impl Query {
     #[pyo3(signature = (title = ""))]
     fn html(&self, title: &str) -> String {
         ccd_picture::html(&self.scene, &self.outcome, title)
+    }
+}
+
+/// JSON text as the CLI prints it (pretty, without the CLI's final newline).
+fn pretty(value: &serde_json::Value) -> String {
+    serde_json::to_string_pretty(value).unwrap_or_default()
+}
+
+/// One answered world: the world and its outcome.
+#[pyclass(frozen, module = "ccd_exact._native")]
+struct WorldQuery {
+    world: World,
+    outcome: WorldOutcome,
+}
+
+impl WorldQuery {
+    /// The outcome of queried pair `k` (`pairs[k]` of the JSON), or why
+    /// there is none.
+    fn outcome(&self, k: usize) -> PyResult<(Scene, &Outcome)> {
+        let p = self.outcome.pairs.get(k).ok_or_else(|| {
+            PyIndexError::new_err(format!(
+                "pair {k}: the world has {} queried pairs",
+                self.outcome.pairs.len()
+            ))
+        })?;
+        match &p.result {
+            Ok(o) => Ok((self.world.pair(p.a, p.b), o)),
+            Err(e) => Err(PyValueError::new_err(format!(
+                "pair {k} ({:?}, {:?}) has no answer: {e}",
+                self.outcome.bodies[p.a], self.outcome.bodies[p.b]
+            ))),
+        }
+    }
+}
+
+#[pymethods]
+impl WorldQuery {
+    /// The result as the CLI's `--json` prints it for the world (pretty, no
+    /// final newline); written with the GIL released.
+    fn json(&self, py: Python<'_>) -> String {
+        py.detach(|| pretty(&world_to_json(&self.outcome)))
+    }
+    /// Queried pair `k`'s result as `ccd-exact --json` prints it for that
+    /// pair's scene (the world's span, bodies `a` and `b`); `None` when the
+    /// pair's query has no answer (its `error` in the world's JSON).
+    fn pair_json(&self, k: usize) -> PyResult<Option<String>> {
+        match self.outcome.pairs.get(k).map(|p| &p.result) {
+            Some(Ok(o)) => Ok(Some(pretty(&to_json(o)))),
+            Some(Err(_)) => Ok(None),
+            None => Err(PyIndexError::new_err(format!(
+                "pair {k}: the world has {} queried pairs",
+                self.outcome.pairs.len()
+            ))),
+        }
+    }
+    /// Queried pair `k`'s SVG picture.
+    #[pyo3(signature = (k, title = ""))]
+    fn pair_svg(&self, k: usize, title: &str) -> PyResult<String> {
+        let (scene, o) = self.outcome(k)?;
+        Ok(ccd_picture::svg(&scene, o, title))
+    }
+    /// Queried pair `k`'s HTML page.
+    #[pyo3(signature = (k, title = ""))]
+    fn pair_html(&self, k: usize, title: &str) -> PyResult<String> {
+        let (scene, o) = self.outcome(k)?;
+        Ok(ccd_picture::html(&scene, o, title))
     }
 }
 
@@ -69,6 +140,8 @@ impl From<CcdError> for Failure {
             CcdError::Motion { field, .. } => Failure::Scene(message, Some(field)),
             CcdError::Option { .. } => Failure::Option(message),
             CcdError::Effort { .. } => Failure::Effort(message),
+            // A world's documented cap on candidate pairs: a limit, as an effort bound is.
+            CcdError::Broad(BroadError::TooManyCandidates { .. }) => Failure::Effort(message),
             CcdError::Internal(_) => Failure::Internal(message),
             // `CcdError` is non-exhaustive: a new kind is a bug until it is mapped.
             _ => Failure::Internal(message),
@@ -127,13 +200,8 @@ fn options(
     })
 }
 
-/// Parses and runs one scene; a panic is caught and reported.
-fn answer(text: &str, options: &Options) -> Result<Query, Failure> {
-    let work = || -> Result<Query, Failure> {
-        let scene = Scene::from_toml(text)?;
-        let outcome = run(&scene, options)?;
-        Ok(Query { scene, outcome })
-    };
+/// Runs `work`; a panic is caught and reported as an internal error.
+fn guarded<T>(work: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> {
     catch_unwind(AssertUnwindSafe(work)).unwrap_or_else(|panic| {
         let what = panic
             .downcast_ref::<&str>()
@@ -142,6 +210,59 @@ fn answer(text: &str, options: &Options) -> Result<Query, Failure> {
             .unwrap_or_else(|| "panic".into());
         Err(Failure::Internal(format!("internal error (panic): {what}")))
     })
+}
+
+/// Parses and runs one pair scene; a world file is refused, naming the
+/// entry that answers it.
+fn answer(text: &str, options: &Options) -> Result<Query, Failure> {
+    guarded(|| match SceneFile::from_toml(text)? {
+        SceneFile::Pair(scene) => {
+            let outcome = run(&scene, options)?;
+            Ok(Query {
+                scene: *scene,
+                outcome,
+            })
+        }
+        SceneFile::World(_) => Err(Failure::Scene(
+            "field `body`: this is a world file (`[[body]]` tables), not a pair scene: \
+             answer it with `collide_world_toml` (or `collide_world`)"
+                .into(),
+            Some("body".into()),
+        )),
+    })
+}
+
+/// Parses and runs one world; a pair file is refused, naming the entry
+/// that answers it.
+fn answer_world(text: &str, options: &Options) -> Result<WorldQuery, Failure> {
+    guarded(|| match SceneFile::from_toml(text)? {
+        SceneFile::World(world) => {
+            let outcome = run_world(&world, options)?;
+            Ok(WorldQuery { world, outcome })
+        }
+        SceneFile::Pair(_) => Err(Failure::Scene(
+            "field `body`: missing: a world file has `[[body]]` tables; this is a pair \
+             scene (`[a]`, `[b]`): answer it with `collide_toml`"
+                .into(),
+            Some("body".into()),
+        )),
+    })
+}
+
+/// Runs `work` on `threads` threads (`None`: rayon's global pool).
+fn on_threads<T: Send>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, String> {
+    match threads {
+        None => Ok(work()),
+        Some(0) => Err("option `threads`: at least 1".to_string()),
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map(|pool| pool.install(work))
+            .map_err(|e| format!("option `threads`: cannot start {n} threads: {e}")),
+    }
 }
 
 /// Runs the scene `text` (TOML) with the GIL released.
@@ -178,21 +299,32 @@ fn run_many(
     let all = || -> Vec<Result<Query, Failure>> {
         texts.par_iter().map(|t| answer(t, &options)).collect()
     };
-    let answers = py.detach(|| match threads {
-        None => Ok(all()),
-        Some(0) => Err("option `threads`: at least 1".to_string()),
-        Some(n) => rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map(|pool| pool.install(all))
-            .map_err(|e| format!("option `threads`: cannot start {n} threads: {e}")),
-    });
+    let answers = py.detach(|| on_threads(threads, all));
     let answers = answers.map_err(PyValueError::new_err)?;
     answers
         .into_iter()
         .enumerate()
         .map(|(i, a)| a.map_err(|f| f.into_py(py, &format!("pairs[{i}]: "))))
         .collect()
+}
+
+/// Runs the world file `text` (TOML, `[[body]]` tables) on `threads`
+/// threads (`None`: rayon's pool, one per core) with the GIL released.
+#[pyfunction]
+#[pyo3(signature = (text, threads = None, first_contact = false, digits = 15, arithmetic = "exact", geometry = true))]
+fn run_world_toml(
+    py: Python<'_>,
+    text: &str,
+    threads: Option<usize>,
+    first_contact: bool,
+    digits: u32,
+    arithmetic: &str,
+    geometry: bool,
+) -> PyResult<WorldQuery> {
+    let options = options(first_contact, digits, arithmetic, geometry)?;
+    py.detach(|| on_threads(threads, || answer_world(text, &options)))
+        .map_err(PyValueError::new_err)?
+        .map_err(|f| f.into_py(py, ""))
 }
 
 /// Median seconds of `reps` runs of the scene `text` inside Rust (parsing
@@ -221,8 +353,10 @@ fn median_run_seconds(py: Python<'_>, text: &str, reps: usize) -> PyResult<f64> 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Query>()?;
+    m.add_class::<WorldQuery>()?;
     m.add_function(wrap_pyfunction!(run_toml, m)?)?;
     m.add_function(wrap_pyfunction!(run_many, m)?)?;
+    m.add_function(wrap_pyfunction!(run_world_toml, m)?)?;
     m.add_function(wrap_pyfunction!(median_run_seconds, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -3,13 +3,18 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 from pathlib import Path
 
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-SCENES = sorted((ROOT / "tests" / "scenes").glob("*.toml"))
+_WORLD = re.compile(r"^\s*(\[\[body\]\]|body\s*=)", re.M)
+_FILES = sorted((ROOT / "tests" / "scenes").glob("*.toml"))
+# Pair scenes (`[a]`, `[b]`) and world files (`[[body]]` tables).
+SCENES = [p for p in _FILES if not _WORLD.search(p.read_text())]
+WORLDS = [p for p in _FILES if _WORLD.search(p.read_text())]
 PAIRS = Path(__file__).resolve().parent / "data" / "pairs.jsonl"
 
 
