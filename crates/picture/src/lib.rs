@@ -31,6 +31,7 @@
 //!     complete: true,
 //!     stats: Stats::default(),
 //!     geometry: vec![],
+//!     segment_geometry: vec![],
 //! };
 //! let picture = svg(&scene, &outcome, "two spheres");
 //! assert!(picture.starts_with("<svg") && picture.contains("collision-free"));
