@@ -332,21 +332,31 @@ fn run_world_toml(
 #[pyfunction]
 #[pyo3(signature = (text, reps = 100))]
 fn median_run_seconds(py: Python<'_>, text: &str, reps: usize) -> PyResult<f64> {
+    /// Most runs one call times (the sample is held in memory).
+    const MAX_REPS: usize = 1_000_000;
+    if reps > MAX_REPS {
+        return Err(PyValueError::new_err(format!(
+            "option `reps`: at most {MAX_REPS}"
+        )));
+    }
     let options = Options::default();
     let scene = Scene::from_toml(text).map_err(|e| Failure::from(e).into_py(py, ""))?;
     py.detach(|| {
-        let mut times: Vec<f64> = (0..reps.max(1))
-            .map(|_| {
-                let start = Instant::now();
-                let out = run(&scene, &options);
-                let secs = start.elapsed().as_secs_f64();
-                drop(out);
-                secs
-            })
-            .collect();
-        times.sort_by(f64::total_cmp);
-        Ok(times[times.len() / 2])
+        guarded(|| {
+            let mut times: Vec<f64> = (0..reps.max(1))
+                .map(|_| {
+                    let start = Instant::now();
+                    let out = run(&scene, &options);
+                    let secs = start.elapsed().as_secs_f64();
+                    drop(out);
+                    secs
+                })
+                .collect();
+            times.sort_by(f64::total_cmp);
+            Ok(times[times.len() / 2])
+        })
     })
+    .map_err(|e| e.into_py(py, ""))
 }
 
 /// The module `ccd_exact._native`.

@@ -9,7 +9,7 @@ use ccd_exact::{Outcome, Scene, State};
 use ccd_motion::{Bezier, Body, Motion};
 use ccd_quadric::{
     affine_inverse, body_diagonal, characteristic, classify_quartic, congruence, integral,
-    Configuration, Ellipsoid, Mat4,
+    Ellipsoid, Mat4,
 };
 
 /// De Casteljau at `u` over ℚ, coordinate-wise, with optional weights.
@@ -88,14 +88,7 @@ pub const PASS_THROUGH: [State; 5] = [
 pub fn quadric_at(body: &Body, u: &Rat) -> Mat4<Rat> {
     match &body.motion {
         Motion::Affine { matrix } => {
-            let flat: Bezier<[Rat; 12]> = Bezier {
-                points: matrix
-                    .points
-                    .iter()
-                    .map(|m| std::array::from_fn(|i| m[i / 4][i % 4].clone()))
-                    .collect(),
-                weights: matrix.weights.clone(),
-            };
+            let flat = matrix.flattened();
             let e = eval_bezier(&flat, u);
             let l: [[Rat; 3]; 3] =
                 std::array::from_fn(|r| std::array::from_fn(|k| e[4 * r + k].clone()));
@@ -116,9 +109,5 @@ pub fn static_state(scene: &Scene, u: &Rat) -> State {
         &integral(&quadric_at(&scene.a, u)),
         &integral(&quadric_at(&scene.b, u)),
     );
-    match classify_quartic(&f, Int::signum) {
-        Configuration::Separate => State::Separate,
-        Configuration::ExternalTouch => State::Touch,
-        Configuration::Overlap => State::Overlap,
-    }
+    State::from(classify_quartic(&f, Int::signum))
 }

@@ -110,21 +110,18 @@ fn walk_candidates<O: Oracle>(
     let [d0, d1] = o.domain();
     let cluster_gap = (d1 - d0).mul_pow2(CLUSTER_GAP_LOG2);
     for found in roots {
-        let mut pending = vec![(found, true)];
-        match &pending[0].0 {
-            Found::GaveUp => return Ok(None),
-            Found::Failed(e) => return Err(e.clone()),
-            _ => stats.candidates += 1,
+        if !matches!(found, Found::GaveUp | Found::Failed(_)) {
+            stats.candidates += 1;
         }
+        let mut pending = vec![(found, true)];
         while let Some((found, may_split)) = pending.pop() {
             match found {
                 Found::Root(mut r) => {
-                    let p = touch_at(o, &mut r, zeros);
+                    let mut p = touch_at(o, &mut r, zeros);
                     if !p.touch {
                         continue;
                     }
                     let mut instant = o.refine(&mut r, q);
-                    let mut p = p;
                     if p.single().is_none() {
                         p = touch_at(o, &mut r, zeros);
                         if !p.touch {

@@ -141,14 +141,7 @@ fn place(body: &Body, y: &Vec3, u: &Rat) -> Option<Vec3> {
             add(rotate(&q, &dy), point(center, u))
         }
         Motion::Affine { matrix } => {
-            let flat = Bezier {
-                points: matrix
-                    .points
-                    .iter()
-                    .map(|m| std::array::from_fn::<Rat, 12, _>(|i| m[i / 4][i % 4].clone()))
-                    .collect(),
-                weights: matrix.weights.clone(),
-            };
+            let flat = matrix.flattened();
             let m = point(&flat, u);
             std::array::from_fn(|k| {
                 (0..3).fold(m[4 * k + 3].clone(), |s, j| s + &m[4 * k + j] * &dy[j])

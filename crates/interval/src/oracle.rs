@@ -71,21 +71,6 @@ pub(crate) const MAX_WITNESS_PROBES: usize = 16;
 /// seconds).
 const MAX_EXTRA_BITS: u32 = 1 << 12;
 
-/// What is known about `sr0 ≡ 0`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Sr0 {
-    /// `sr0` is not identically zero (proven at a sample).
-    NotZero,
-    /// `sr0 ≡ 0` by the structure of the scene (Note 2 of the paper, and its
-    /// generalisation: the quadratic parts of `A(t)` and `B(t)` are
-    /// proportional for all t, so `λA + B` drops rank by 2 at one λ).
-    Proven,
-    /// `sr0` encloses zero at every sample, even in multi-precision, and no
-    /// structure proves `sr0 ≡ 0`: undecided. Nothing is assumed; the span
-    /// is a gap (filled only by the sphere certificates).
-    Undecided,
-}
-
 /// An upper bound on `log2 |x|` (0 for `|x| <= 1`).
 fn log2_bound(x: &Rat) -> u64 {
     if x.signum() == 0 {
@@ -168,7 +153,10 @@ pub struct Intervals<'s> {
     /// The bodies as given (the contact geometry).
     scene: (&'s Body, &'s Body),
     pub(crate) span: [Rat; 2],
-    sr0: Sr0,
+    /// `sr0 ≡ 0` by the structure of the scene (Note 2 of the paper, and
+    /// its generalisation: the quadratic parts of `A(t)` and `B(t)` are
+    /// proportional for all t, so `λA + B` drops rank by 2 at one λ).
+    sr0_zero: bool,
     digits: u32,
     /// Bits of the largest angle `|rate·t|`, `|frequency·t|` on the span,
     /// added to every multi-precision evaluation, so that `sin(1e300·t)`
@@ -201,17 +189,13 @@ impl<'s> Intervals<'s> {
         }
         let (qa, qb) = (without_invisible_spin(a), without_invisible_spin(b));
         let extra_bits = angle_bits([&qa, &qb], span);
-        let sr0 = if sr0_vanishes_by_structure(&qa, &qb) {
-            Sr0::Proven
-        } else {
-            Sr0::NotZero
-        };
+        let sr0_zero = sr0_vanishes_by_structure(&qa, &qb);
         Ok(Intervals {
             a: qa,
             b: qb,
             scene: (a, b),
             span: span.clone(),
-            sr0,
+            sr0_zero,
             digits: opts.digits,
             extra_bits,
             cluster_boxes: Cell::new(MAX_CLUSTER_BOXES_TOTAL),
@@ -241,7 +225,7 @@ impl<'s> Intervals<'s> {
             let (f, inv) = invariants_at(&self.a, &self.b, &self.span, &t, t.precision());
             Readings::of(&f, &inv)
         };
-        if self.sr0 == Sr0::Proven {
+        if self.sr0_zero {
             r = r.with_zero(Quantity::Sr0);
         }
         r
@@ -256,8 +240,10 @@ impl<'s> Intervals<'s> {
             .max(self.span[1].to_f64().abs())
             .max(dt);
         let ratio = (scale / dt).log2().max(0.0);
-        (self.digits as f64 * std::f64::consts::LOG2_10 + ratio + 96.0).ceil() as u32
-            + self.extra_bits
+        // A span too narrow for `f64` beside its ends makes `ratio`
+        // infinite: the cast saturates, and so does the sum.
+        ((self.digits as f64 * std::f64::consts::LOG2_10 + ratio + 96.0).ceil() as u32)
+            .saturating_add(self.extra_bits)
     }
 
     /// `(t1 − t0)·10^−digits`.
@@ -348,7 +334,7 @@ fn midpoint_state(o: &Intervals<'_>, t: &Rat) -> State {
         }
     };
     let mut s = SignData::from_invariants(&inv, &f, sign);
-    if o.sr0 == Sr0::Proven {
+    if o.sr0_zero {
         s.sr0 = 0;
     }
     State::from(classify(&s))
@@ -420,17 +406,12 @@ impl Oracle for Intervals<'_> {
     /// neither; `sr11` (asked only when `sr0 ≡ 0` is proven): proven
     /// nonzero at a sample, or undecided — `sr11 ≡ 0` is never assumed.
     fn vanishes(&mut self, q: Quantity) -> Vanishing {
-        if q == Quantity::Sr0 && self.sr0 == Sr0::Proven {
+        if q == Quantity::Sr0 && self.sr0_zero {
             return Vanishing::Identically;
         }
         match nonzero_somewhere(&self.problem(q), &self.span, self.extra_bits) {
             Some(t) => Vanishing::Not(Some(t)),
-            None => {
-                if q == Quantity::Sr0 {
-                    self.sr0 = Sr0::Undecided;
-                }
-                Vanishing::Unknown
-            }
+            None => Vanishing::Unknown,
         }
     }
 

@@ -43,6 +43,21 @@ impl<P> Bezier<P> {
     }
 }
 
+impl Bezier<Mat34> {
+    /// The twelve entries of `[L | d]` as one curve in ℚ¹² (same weights):
+    /// an affine motion's matrix curve evaluated or bounded entrywise.
+    pub fn flattened(&self) -> Bezier<[Rat; 12]> {
+        Bezier {
+            points: self
+                .points
+                .iter()
+                .map(|m| std::array::from_fn(|i| m[i / 4][i % 4].clone()))
+                .collect(),
+            weights: self.weights.clone(),
+        }
+    }
+}
+
 /// The centre curve of a helical motion:
 /// `c(t) = base + velocity·t + cos·cos(frequency·t) + sin·sin(frequency·t)`,
 /// with `t` the time itself.

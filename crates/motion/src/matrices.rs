@@ -165,14 +165,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
         }
         Motion::Affine { matrix } => {
             // The twelve entries as one curve: one weight polynomial.
-            let curve: Bezier<[Rat; 12]> = Bezier {
-                points: matrix
-                    .points
-                    .iter()
-                    .map(|m| std::array::from_fn(|i| m[i / 4][i % 4].clone()))
-                    .collect(),
-                weights: matrix.weights.clone(),
-            };
+            let curve = matrix.flattened();
             let PolyCurve {
                 numerators: entries,
                 denominator: w,

@@ -82,14 +82,7 @@ fn place(body: &Body, u: &Rat) -> Result<Placed, StabilityError> {
         } => rigid(eval_curve(center, u), eval_curve(orientation, u)),
         Motion::Affine { matrix } => {
             // [L | d]/w at u: interpolate the 12 entries as one curve.
-            let flat = Bezier {
-                points: matrix
-                    .points
-                    .iter()
-                    .map(|m| std::array::from_fn::<Rat, 12, _>(|i| m[i / 4][i % 4].clone()))
-                    .collect(),
-                weights: matrix.weights.clone(),
-            };
+            let flat = matrix.flattened();
             let e = eval_curve(&flat, u);
             let l = std::array::from_fn(|i| std::array::from_fn(|j| e[4 * i + j].clone()));
             let d = std::array::from_fn(|i| e[4 * i + 3].clone());
