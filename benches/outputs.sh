@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Prints the CLI's JSON for every shipped pair scene in the exact, exact
+# first-contact and float modes, one block per run: the yardstick that a
+# speed change leaves every answer byte-identical.
+#
+#   bash benches/outputs.sh > /tmp/before.txt   # on the old code
+#   bash benches/outputs.sh > /tmp/after.txt    # on the new code
+#   cmp /tmp/before.txt /tmp/after.txt
+#
+# BIN names the binary to run (default: target/release/ccd-exact, built here).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+BIN=${BIN:-target/release/ccd-exact}
+[ -n "${BIN_BUILT:-}" ] || cargo build -q --release >&2
+for s in tests/scenes/*.toml tests/stability/*.toml benches/scenes/*.toml; do
+  case "$s" in *world*|*issue-18-*|*rigid-288*) continue ;; esac # worlds: tests/world.rs; the slow ones
+  for mode in "" "--first-contact" "--arithmetic float"; do
+    echo "== $s $mode"
+    # shellcheck disable=SC2086
+    "$BIN" "$s" --json $mode 2>&1
+    echo "exit $?"
+  done
+done

@@ -1,0 +1,71 @@
+//! Median wall-clock time of the library call `ccd_exact::run` per scene
+//! and mode, with the path each query took: the quick, one-run table
+//! behind docs/table4.md's per-class rows (criterion gives the benches).
+//!
+//! `cargo run --release --example speed -- [--reps N] SCENE.toml…`
+//!
+//! Prints one tab-separated line per scene: name, exact total, exact first
+//! contact, float total (µs, medians), exact/float ratio, deg f, deg sr0,
+//! whether `sr0` was formed.
+
+use ccd_exact::{run, Arithmetic, Options, Scene};
+use std::time::Instant;
+
+fn median_us(reps: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..reps)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64() * 1e6
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+fn main() {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut reps = 31;
+    if let Some(i) = args.iter().position(|a| a == "--reps") {
+        reps = args.get(i + 1).and_then(|s| s.parse().ok()).unwrap_or(reps);
+        args.drain(i..(i + 2).min(args.len()));
+    }
+    println!("scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed");
+    for path in args {
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            eprintln!("{path}: unreadable");
+            continue;
+        };
+        let Ok(scene) = Scene::from_toml(&text) else {
+            continue; // a world file or a bad scene
+        };
+        let exact = Options::default();
+        let first = Options {
+            first_contact_only: true,
+            ..Options::default()
+        };
+        let float = Options {
+            arithmetic: Arithmetic::Float,
+            ..Options::default()
+        };
+        let Ok(out) = run(&scene, &exact) else {
+            eprintln!("{path}: error");
+            continue;
+        };
+        let e = median_us(reps, || drop(run(&scene, &exact)));
+        let fc = median_us(reps, || drop(run(&scene, &first)));
+        let fl = if scene.a.motion.is_rational() && scene.b.motion.is_rational() {
+            median_us(reps, || drop(run(&scene, &float)))
+        } else {
+            f64::NAN
+        };
+        let name = path.rsplit('/').next().unwrap_or(&path);
+        println!(
+            "{name}\t{e:.1}\t{fc:.1}\t{fl:.1}\t{:.2}\t{}\t{}\t{}",
+            e / fl,
+            out.stats.deg_f,
+            out.stats.deg_sr0.map_or(-1, |d| d as i64),
+            out.stats.sr0_formed
+        );
+    }
+}
