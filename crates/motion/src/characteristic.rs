@@ -22,6 +22,7 @@
 //! functions, and it also finds the λ-rescaling hidden in the homogeneous
 //! integer form of a rotation (`R = M(q)/|q|²`).
 
+use crate::centred::centred_characteristic;
 use crate::error::MotionError;
 use crate::kinds::Body;
 use crate::matrices::{placed_quadric, PlacedQuadric};
@@ -60,6 +61,12 @@ impl CharPoly {
             .chain(&b.det_factors)
             .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
             .collect();
+        // Bodies that never turn: in the frame of A's centre (crate::centred).
+        if let (Some(ca), Some(cb)) = (a.centred(), b.centred()) {
+            return CharPoly {
+                coeffs: normalise_with(centred_characteristic(&ca, &cb), candidates),
+            };
+        }
         // Before normalisation, coefficient k of f has degree at most
         // 2·(k·deg A + (4 − k)·deg B) in the entries of the inverse placements
         // N (through the quadrics NᵀDN) or of the placements M (through

@@ -5,6 +5,7 @@
 
 #![warn(missing_docs)]
 
+mod centred;
 pub mod characteristic;
 mod curve;
 mod error;

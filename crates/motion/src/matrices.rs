@@ -2,6 +2,7 @@
 //! `A(u) ∝ N(u)ᵀ·D·N(u)` (`N ∝ M⁻¹`) with integer polynomial entries in
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
+use crate::centred::{centred_blocks, Centred};
 use crate::curve::{to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
@@ -111,6 +112,14 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
         center,
         w,
     };
+    // A constant orientation: the rotation over ℚ, then as constants (the
+    // same entries, without polynomial arithmetic).
+    let fixed = |q: &Quat, center: [QPoly; 3], w: QPoly| Frame::Rigid {
+        m: rotation_numerator(q).map(|row| row.map(QPoly::constant)),
+        n: QPoly::constant(norm2(q)),
+        center,
+        w,
+    };
     for (points, weights) in motion.curve_shapes() {
         if points == 0 || weights.is_some_and(|w| w != points) {
             return Err(MotionError::MalformedCurve {
@@ -128,11 +137,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
             center,
             orientation,
         } => Ok((
-            rigid(
-                &constant_vec(orientation),
-                constant_vec(center),
-                QPoly::one(),
-            ),
+            fixed(orientation, constant_vec(center), QPoly::one()),
             vec![],
         )),
         Motion::Translation {
@@ -142,10 +147,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
             let w = c.denominator.clone();
-            Ok((
-                rigid(&constant_vec(orientation), c.numerators, c.denominator),
-                vec![w],
-            ))
+            Ok((fixed(orientation, c.numerators, c.denominator), vec![w]))
         }
         Motion::Rigid {
             orientation,
@@ -251,6 +253,77 @@ impl PlacedQuadric {
     /// (interior `XᵀA(u)X < 0`), up to a factor positive on the span.
     pub fn quadric(&self) -> Mat4<ZPoly> {
         congruence(&self.inverse(), &self.diagonal)
+    }
+
+    /// A body that never turns (static, or translating along a polynomial
+    /// curve), seen from its own centre ([`crate::centred`]): the constant
+    /// block `K` and corner `κ` of [`PlacedQuadric::quadric`] there, and the
+    /// centre curve. `None` for a body that turns or a rational centre curve.
+    pub(crate) fn centred(&self) -> Option<Centred> {
+        let Frame::Rigid { m, n, center, w } = &self.frame else {
+            return None;
+        };
+        let constant = |p: &QPoly| p.degree().unwrap_or(0) == 0;
+        if !(constant(n) && constant(w) && m.iter().flatten().all(constant)) {
+            return None;
+        }
+        // Every input over one denominator D: m = M/D, n = n'/D, w = w'/D,
+        // center = C/D. Each entry of N = [[w·mᵀ, −mᵀ·center], [0, n·w]]
+        // (rigid_inverse) is a product of two inputs, so N·D² is integral,
+        // and the primitive integer matrix (to_integer_matrix) is N·D²/g
+        // with g the gcd of its coefficients: integer arithmetic only.
+        let (m, n, w) = (
+            m.each_ref().map(|r| r.each_ref().map(|e| e.coeff(0))),
+            n.coeff(0),
+            w.coeff(0),
+        );
+        let center = center.each_ref().map(QPoly::coeffs);
+        let rats = || {
+            m.iter()
+                .flatten()
+                .chain([&n, &w])
+                .chain(center.iter().flatten())
+        };
+        let den = rats().fold(Int::one(), |l, r| l.lcm(r.denom()));
+        let int = |r: &Rat| r.numer() * &den.div_exact(r.denom());
+        let (m, n, w) = (
+            m.each_ref().map(|r| r.each_ref().map(int)),
+            int(&n),
+            int(&w),
+        );
+        let center: [Vec<Int>; 3] = center.each_ref().map(|c| c.iter().map(int).collect());
+        let x: Mat3<Int> = std::array::from_fn(|i| std::array::from_fn(|j| &w * &m[j][i]));
+        let z = &n * &w;
+        let len = center.iter().map(Vec::len).max().unwrap_or(0);
+        let y = (0..3).flat_map(|i| {
+            let (m, center) = (&m, &center);
+            (0..len).map(move |k| {
+                (0..3).fold(Int::zero(), |mut s, j| {
+                    if let Some(c) = center[j].get(k) {
+                        s.add_mul(&m[j][i], c);
+                    }
+                    s
+                })
+            })
+        });
+        let g = x
+            .iter()
+            .flatten()
+            .chain([&z])
+            .cloned()
+            .chain(y)
+            .fold(Int::zero(), |g, v| g.gcd(&v));
+        if g.is_zero() {
+            return None;
+        }
+        let d = self.diagonal.each_ref().map(|e| e.coeff(0));
+        let (k, kappa) = centred_blocks(&x, &z, &g, &d);
+        Some(Centred {
+            k,
+            kappa,
+            centre: center.map(ZPoly::new),
+            denominator: w,
+        })
     }
 
     /// The quadric at one parameter `u`, exactly, scaled to integers (a

@@ -1,0 +1,208 @@
+//! `f(λ; u)` of two bodies that never turn (static or translating along
+//! polynomial curves), set up in the frame of A's centre: a handful of
+//! products of constant 3×3 integer matrices and short polynomials in `u`
+//! instead of two moving 4×4 quadrics and their determinant.
+//!
+//! # The formula
+//!
+//! A placed body's integer quadric is `A = Nᵀ·D·N` with `N` its inverse
+//! placement `[[X, y(u)], [0, z]]` scaled to a primitive integer matrix
+//! ([`crate::matrices`]); for a body that does not turn, `X` and `z` are
+//! constants and its centre is `c(u) = −X⁻¹·y(u)`. The translation
+//! `T = [[I, c_A], [0, 1]]` has determinant 1, so
+//! `det(λA + B) = det(Tᵀ(λA + B)T)`, and in that frame
+//!
+//! `TᵀAT = [[K_A, 0], [0, −κ_A]]`, `TᵀBT = [[K_B, −K_B·d], [−dᵀK_B, dᵀK_B·d − κ_B]]`
+//!
+//! with `K = XᵀD₃X`, `κ = −d₄·z² > 0` and `d(u) = c_B(u) − c_A(u)` (the
+//! scales of the integer quadrics, and so λ's, are kept exactly). With
+//! `P(λ) = λK_A + K_B` and `d = e/δ` (`e` integer, `δ > 0`), the Schur
+//! complement of `P` gives
+//!
+//! `δ²·det(λA + B) = det P·(eᵀK_B·e − δ²(κ_B + λκ_A)) − (K_B·e)ᵀ·adj P·(K_B·e)`,
+//!
+//! where `det P = λ³ det K_A + λ² tr(adj K_A·K_B) + λ tr(K_A·adj K_B) + det K_B`
+//! and `adj P = λ² adj K_A + λ·(adj(K_A + K_B) − adj K_A − adj K_B) + adj K_B`.
+//! The factor `δ²` is a positive constant, which the normalisation's content
+//! removal takes out: the normalised `f` is the very polynomial of the
+//! general route (checked against it by a property test below).
+
+use ccd_arith::Int;
+use ccd_poly::ZPoly;
+use ccd_quadric::{adj3, det3, Mat3};
+
+/// A body that does not turn, as the frame of its own centre sees it.
+#[derive(Clone, Debug)]
+pub(crate) struct Centred {
+    /// `K = XᵀD₃X`: the integer quadric's constant 3×3 block.
+    pub(crate) k: Mat3<Int>,
+    /// `κ = −d₄·z² > 0`: minus the integer quadric's corner at its centre.
+    pub(crate) kappa: Int,
+    /// The centre curve `c(u)` times [`Centred::denominator`].
+    pub(crate) centre: [ZPoly; 3],
+    /// The centre curve's denominator (a nonzero integer).
+    pub(crate) denominator: Int,
+}
+
+/// `Σ_ij m_ij·x_ij`: the trace of `m·x` for a symmetric `x`.
+fn trace_product(m: &Mat3<Int>, x: &Mat3<Int>) -> Int {
+    let mut s = Int::zero();
+    for (mr, xr) in m.iter().zip(x) {
+        for (a, b) in mr.iter().zip(xr) {
+            s.add_mul(a, b);
+        }
+    }
+    s
+}
+
+/// `vᵀ·m·v` for a symmetric constant `m`, from the products `vv[i][j] = v_i·v_j` (`i ≤ j`).
+fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
+    let mut s = ZPoly::zero();
+    for i in 0..3 {
+        for j in i..3 {
+            let c = if i == j {
+                m[i][i].clone()
+            } else {
+                m[i][j].mul_i64(2)
+            };
+            if !c.is_zero() {
+                s = &s + &vv[i][j].mul_int(&c);
+            }
+        }
+    }
+    s
+}
+
+/// `det(λA + B)` (high → low in λ) times a positive constant, for two
+/// bodies that do not turn (module docs).
+pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
+    // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B
+    // (only δ² enters).
+    let e: [ZPoly; 3] = std::array::from_fn(|i| {
+        &b.centre[i].mul_int(&a.denominator) - &a.centre[i].mul_int(&b.denominator)
+    });
+    let delta = &a.denominator * &b.denominator;
+    // b = K_B·e and the products b_i·b_j.
+    let kb_e: [ZPoly; 3] =
+        std::array::from_fn(|i| (0..3).fold(ZPoly::zero(), |s, j| &s + &e[j].mul_int(&b.k[i][j])));
+    let bb: [[ZPoly; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if i <= j {
+                &kb_e[i] * &kb_e[j]
+            } else {
+                ZPoly::zero()
+            }
+        })
+    });
+    let delta2 = &delta * &delta;
+    // s₀(u) = eᵀK_B·e − δ²κ_B.
+    let s0 = &(0..3).fold(ZPoly::zero(), |s, i| &s + &(&e[i] * &kb_e[i]))
+        - &ZPoly::constant(&delta2 * &b.kappa);
+    let (adj_a, adj_b) = (adj3(&a.k), adj3(&b.k));
+    let sum: Mat3<Int> = std::array::from_fn(|i| std::array::from_fn(|j| &a.k[i][j] + &b.k[i][j]));
+    let adj_sum = adj3(&sum);
+    let mixed: Mat3<Int> = std::array::from_fn(|i| {
+        std::array::from_fn(|j| &(&adj_sum[i][j] - &adj_a[i][j]) - &adj_b[i][j])
+    });
+    // det P, low → high in λ.
+    let p = [
+        det3(&b.k),
+        trace_product(&adj_b, &a.k),
+        trace_product(&adj_a, &b.k),
+        det3(&a.k),
+    ];
+    // bᵀ·adj P·b, low → high in λ.
+    let q = [&adj_b, &mixed, &adj_a].map(|m| quadratic_form(m, &bb));
+    let da = &delta2 * &a.kappa;
+    // c_k = p_k·s₀ − δ²κ_A·p_(k−1) − q_k.
+    let c = |k: usize| -> ZPoly {
+        let mut ck = if k < 4 {
+            s0.mul_int(&p[k])
+        } else {
+            ZPoly::zero()
+        };
+        if k > 0 {
+            ck = &ck - &ZPoly::constant(&da * &p[k - 1]);
+        }
+        if k < 3 {
+            ck = &ck - &q[k];
+        }
+        ck
+    };
+    [c(4), c(3), c(2), c(1), c(0)]
+}
+
+/// `K = XᵀD₃X` and `κ = −d₄·z²` of the primitive integer inverse placement
+/// `[[X/g, ·], [0, z/g]]` (`X`, `z` integral, `g` the gcd of its
+/// coefficients) and the integer body diagonal `D`.
+pub(crate) fn centred_blocks(x: &Mat3<Int>, z: &Int, g: &Int, d: &[Int; 4]) -> (Mat3<Int>, Int) {
+    let xi: Mat3<Int> = x
+        .each_ref()
+        .map(|row| row.each_ref().map(|e| e.div_exact(g)));
+    let k = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..3).fold(Int::zero(), |mut acc, r| {
+                acc.add_mul(&xi[r][i], &(&d[r] * &xi[r][j]));
+                acc
+            })
+        })
+    });
+    let zi = z.div_exact(g);
+    (k, -&(&d[3] * &(&zi * &zi)))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::kinds::{Bezier, Body, Motion};
+    use crate::matrices::placed_quadric;
+    use crate::{normalise, CharPoly};
+    use ccd_arith::Rat;
+
+    fn rat(n: i64, d: i64) -> Rat {
+        Rat::from_frac(n, d)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// The centred route gives the very `f` of the general route
+        /// (`det` of the two integer quadrics, normalised), on static and
+        /// translating bodies of every orientation, with centre curves of
+        /// degree 0 to 3 and long rational numbers.
+        #[test]
+        fn centred_route_is_the_general_route(
+            radii in proptest::collection::vec((1i64..40, 1i64..9), 6),
+            quats in proptest::collection::vec(-7i64..8, 8),
+            points in proptest::collection::vec((-10_000_000_000i64..10_000_000_000, 1i64..1_000_000), 24),
+            degrees in (0usize..4, 0usize..4),
+            big in 0u32..40,
+        ) {
+            let body = |k: usize, deg: usize| {
+                let mut q: [Rat; 4] = std::array::from_fn(|i| Rat::from(quats[4 * k + i]));
+                if q.iter().all(Rat::is_zero) {
+                    q[0] = Rat::one();
+                }
+                let scale = Rat::from_int(ccd_arith::Int::from(3).pow(big));
+                let pts: Vec<[Rat; 3]> = (0..=deg)
+                    .map(|p| std::array::from_fn(|i| {
+                        let (n, d) = points[12 * k + 3 * p + i];
+                        &rat(n, d) * &scale
+                    }))
+                    .collect();
+                let orientation = q;
+                let motion = if deg == 0 {
+                    Motion::Static { center: pts[0].clone(), orientation }
+                } else {
+                    Motion::Translation { center: Bezier { points: pts, weights: None }, orientation }
+                };
+                let radii = std::array::from_fn(|i| { let (n, d) = radii[3 * k + i]; rat(n, d) });
+                Body { radii, motion }
+            };
+            let span = [Rat::zero(), Rat::one()];
+            let (a, b) = (body(0, degrees.0), body(1, degrees.1));
+            let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
+            let general = CharPoly { coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())) };
+            proptest::prop_assert!(pa.centred().is_some() && pb.centred().is_some());
+            proptest::prop_assert_eq!(CharPoly::from_placed(&pa, &pb), general);
+        }
+    }
+}
