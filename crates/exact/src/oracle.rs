@@ -95,6 +95,9 @@ pub struct Exact<'s> {
     filtered: bool,
     /// The last sample's closed forms and coefficient signs.
     sample: RefCell<Option<Sample>>,
+    /// `f(λ; u)` formed before [`Oracle::prepare`] to read a sample off it,
+    /// when that is cheaper than the placements (bodies that never turn).
+    early: RefCell<Option<CharPoly>>,
 }
 
 impl<'s> Exact<'s> {
@@ -115,6 +118,7 @@ impl<'s> Exact<'s> {
             formed: Cell::new(false),
             filtered: false,
             sample: RefCell::new(None),
+            early: RefCell::new(None),
         })
     }
 
@@ -130,8 +134,18 @@ impl<'s> Exact<'s> {
     fn values_at(&self, u: &Rat) -> [Int; 5] {
         match &self.f {
             Some(f) => f.char_poly().at_scaled(u),
+            None if !(self.bodies.a.turns() || self.bodies.b.turns()) => self
+                .early
+                .borrow_mut()
+                .get_or_insert_with(|| self.char_poly())
+                .at_scaled(u),
             None => characteristic(&self.bodies.a.quadric_at(u), &self.bodies.b.quadric_at(u)),
         }
+    }
+
+    /// `f(λ; u)` of the placements ([`CharPoly::from_placed`]).
+    fn char_poly(&self) -> CharPoly {
+        CharPoly::from_placed(&self.bodies.a, &self.bodies.b)
     }
 }
 
@@ -245,7 +259,11 @@ impl Oracle for Exact<'_> {
 
     /// Forms `f(λ; u)`, refusing a closed form above [`MAX_EXACT_BITS`].
     fn prepare(&mut self) -> Result<(), CcdError> {
-        let f = CharPoly::from_placed(&self.bodies.a, &self.bodies.b);
+        let f = self
+            .early
+            .borrow_mut()
+            .take()
+            .unwrap_or_else(|| self.char_poly());
         let size = exact_bits(&f);
         if size > MAX_EXACT_BITS {
             return Err(CcdError::Effort {

@@ -255,6 +255,18 @@ impl PlacedQuadric {
         congruence(&self.inverse(), &self.diagonal)
     }
 
+    /// Whether the body's orientation is constant on the span (static or
+    /// translating): then `f(λ; u)` is cheap ([`crate::centred`]).
+    pub fn turns(&self) -> bool {
+        match &self.frame {
+            Frame::Rigid { m, n, .. } => {
+                n.degree().unwrap_or(0) > 0
+                    || m.iter().flatten().any(|e| e.degree().unwrap_or(0) > 0)
+            }
+            Frame::Affine { .. } => true,
+        }
+    }
+
     /// A body that never turns (static, or translating along a polynomial
     /// curve), seen from its own centre ([`crate::centred`]): the constant
     /// block `K` and corner `κ` of [`PlacedQuadric::quadric`] there, and the
