@@ -12,7 +12,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 BIN=${BIN:-target/release/ccd-exact}
 [ -n "${BIN_BUILT:-}" ] || cargo build -q --release >&2
-for s in tests/scenes/*.toml tests/stability/*.toml benches/scenes/*.toml; do
+for s in tests/scenes/*.toml tests/stability/*.toml benches/scenes/*.toml benches/scenes/lines/*.toml; do
   case "$s" in *world*|*issue-18-*|*rigid-288*) continue ;; esac # worlds: tests/world.rs; the slow ones
   for mode in "" "--first-contact" "--arithmetic float"; do
     echo "== $s $mode"
