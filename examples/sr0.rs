@@ -8,7 +8,8 @@
 //! Each line is `{"scene": NAME, "quantity": "sr0", "coeffs": [c0, c1, …]}`
 //! with the coefficients as decimal strings, constant term first. When
 //! `sr0 ≡ 0` (e.g. Example 5.1) the line carries `sr11` instead, with
-//! `"quantity": "sr11"` and `"sr0_zero": true`. A scene that is not a
+//! `"quantity": "sr11"` and `"sr0_zero": true` (and `"sr11_zero": true`,
+//! `"coeffs": []` when `sr11 ≡ 0` too). A scene that is not a
 //! rational pair (a world file, a helical motion) prints `"error"`.
 
 use ccd_poly::ZPoly;
@@ -37,7 +38,10 @@ fn line(path: &str) -> serde_json::Value {
         return json!({ "scene": name, "quantity": "sr0", "sr0_zero": false, "coeffs": digits(&sr0) });
     }
     let sr11 = closed_form(&f.coeffs, Quantity::Sr11).expect("sr11 has a closed form");
-    json!({ "scene": name, "quantity": "sr11", "sr0_zero": true, "coeffs": digits(&sr11) })
+    json!({
+        "scene": name, "quantity": "sr11", "sr0_zero": true,
+        "sr11_zero": sr11.is_zero(), "coeffs": digits(&sr11)
+    })
 }
 
 fn main() {
