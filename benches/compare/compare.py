@@ -54,6 +54,9 @@ sys.set_int_max_str_digits(0)  # sr0's coefficients reach 12,000 digits
 SCENE_DIRS = ("tests/scenes", "tests/stability", "benches/scenes")
 EXAMPLE_5_1 = "tests/scenes/paper-example-5-1.toml"
 FCL_SAMPLES = 100
+# Our times are enclosures at most 1e-15 of the span wide (the CLI's
+# default), so a length of the timeline below this is not resolved.
+RESOLUTION = 1e-14
 
 
 def log(msg):
@@ -146,16 +149,16 @@ def ground_truth(binary, root, path):
 
     def to_u(instant):
         mid = (to_fraction(instant["lo"]) + to_fraction(instant["hi"])) / 2
-        return float((mid - t0) / (t1 - t0))
+        return (mid - t0) / (t1 - t0)
 
     cf = doc["collision_free"]
     fc = doc.get("first_contact")
     segments = [(seg["state"], to_u(seg["start"]), to_u(seg["end"])) for seg in doc.get("timeline", [])]
     return {
         "collides": None if cf is None else not cf,
-        "first": None if fc is None else to_u(fc),
-        "overlap": [(a, b) for state, a, b in segments if state == "overlap"],
-        "hit": sum(b - a for state, a, b in segments if state != "separate"),
+        "first": None if fc is None else float(to_u(fc)),
+        "overlap": [(float(a), float(b)) for state, a, b in segments if state == "overlap"],
+        "hit": float(sum(b - a for state, a, b in segments if state != "separate")),
     }
 
 
@@ -430,6 +433,8 @@ def summary_table(rows):
         f"{len(wrong) - len(missed)} false hits |",
         f"| missed overlaps with a sample inside the overlap (GJK said no at an overlapping sample) "
         f"| {sum(1 for r in missed if r['inside'] > 0)} |",
+        f"| missed overlaps shorter than FCL's sample spacing 1/{FCL_SAMPLES - 1} "
+        f"| {sum(1 for r in missed if r['truth']['overlap'] and r['truth']['hit'] < 1 / (FCL_SAMPLES - 1))} |",
     ]
     both = [r for r in line if r["fcl_toc"] is not None and r["truth"]["first"] is not None]
     if both:
@@ -455,11 +460,14 @@ def scene_table(rows):
         fcl_says = "collision" if r["fcl_hit"] else "none"
         if r["verdict"] != "ok":
             fcl_says = f"**{fcl_says} ({r['verdict']})**"
+        hit = f"{t['hit']:.3g}"
+        if t["overlap"] and t["hit"] < RESOLUTION:
+            hit = f"< {RESOLUTION:.0e}"
         dt = "—"
         if r["fcl_toc"] is not None and t["first"] is not None:
             dt = f"{r['fcl_toc'] - t['first']:+.2e}"
         out.append(
-            f"| {r['scene']} | {truth_word(t)} | {first} | {t['hit']:.3g} | {fmt_us(r['exact_us'])} "
+            f"| {r['scene']} | {truth_word(t)} | {first} | {hit} | {fmt_us(r['exact_us'])} "
             f"| {fmt_us(r['first_us'])} | {fmt_us(r['flint_us'])} ({r['quantity']}, {r['degree']}, {r['n_roots']}) "
             f"| {r['flint_us'] / r['exact_us']:.1f}× | {fmt_us(r['fcl_us'])} | {fcl_says} | {dt} "
             f"| {r['inside']} |"
@@ -498,7 +506,8 @@ def main():
     print(
         f"Example 5.1 (first contact u = {r51['truth']['first']:.10f}): ours exact total "
         f"{fmt_us(r51['exact_us'])} µs, first contact {fmt_us(r51['first_us'])} µs; FLINT on "
-        f"{r51['quantity']} (sr0 ≡ 0) {fmt_us(r51['flint_us'])} µs; FCL 100 samples "
+        f"{r51['quantity']}{' (sr0 ≡ 0)' if r51['quantity'] == 'sr11' else ''} "
+        f"{fmt_us(r51['flint_us'])} µs; FCL 100 samples "
         f"{'collision at u = %.6f' % r51['fcl_toc'] if r51['fcl_hit'] else 'no collision'} "
         f"({fmt_us(r51['fcl_us'])} µs); FCL default request (conservative advancement, "
         f"10 iterations): returned {ret}, is_collide = {hit}, time_of_contact = {toc}."
