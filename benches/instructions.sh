@@ -17,8 +17,8 @@ count() { # binary scene mode... -> "run process"
   local bin=$1 scene=$2; shift 2
   valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$bin" "$scene" --json "$@" >/dev/null 2>"$tmp/err"
   local total run
-  total=$(callgrind_annotate "$tmp/cg" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1; exit}')
-  run=$(callgrind_annotate --inclusive=yes "$tmp/cg" 2>/dev/null | awk '/src\/lib.rs:ccd_exact::run / {gsub(",", "", $1); print $1; exit}')
+  total=$(callgrind_annotate "$tmp/cg" 2>/dev/null | awk '/PROGRAM TOTALS/ && !done {gsub(",", "", $1); print $1; done = 1}')
+  run=$(callgrind_annotate --inclusive=yes "$tmp/cg" 2>/dev/null | awk '/src\/lib.rs:ccd_exact::run / && !done {gsub(",", "", $1); print $1; done = 1}')
   echo "${run:-0} ${total:-0}"
 }
 printf 'scene\tmode\trun\tprocess'
