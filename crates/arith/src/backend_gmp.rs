@@ -2,7 +2,7 @@
 
 use rug::integer::Order;
 use rug::ops::{DivRounding, Pow};
-use rug::Integer;
+use rug::{Complete, Integer};
 use std::cmp::Ordering;
 
 pub(crate) type Inner = Integer;
@@ -77,7 +77,9 @@ pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
 }
 #[inline]
 pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {
-    a.clone().div_rem(b.clone())
+    // Into two new numbers; `a.clone().div_rem(b.clone())` allocated two
+    // copies first (every `div_exact` came here).
+    a.div_rem_ref(b).complete()
 }
 #[inline]
 pub(crate) fn div_floor(a: &Inner, b: &Inner) -> Inner {

@@ -6,14 +6,8 @@ use num_traits::{Signed, ToPrimitive, Zero};
 
 pub(crate) type Inner = BigInt;
 
-#[inline]
-pub(crate) fn from_i64(v: i64) -> Inner {
-    BigInt::from(v)
-}
-#[inline]
-pub(crate) fn from_u64(v: u64) -> Inner {
-    BigInt::from(v)
-}
+crate::backend_refops::reference_operators!();
+
 #[inline]
 pub(crate) fn is_zero(a: &Inner) -> bool {
     a.is_zero()
@@ -33,46 +27,6 @@ pub(crate) fn bits(a: &Inner) -> u64 {
 #[inline]
 pub(crate) fn abs(a: &Inner) -> Inner {
     a.abs()
-}
-#[inline]
-pub(crate) fn neg(a: &Inner) -> Inner {
-    -a
-}
-#[inline]
-pub(crate) fn add(a: &Inner, b: &Inner) -> Inner {
-    a + b
-}
-#[inline]
-pub(crate) fn sub(a: &Inner, b: &Inner) -> Inner {
-    a - b
-}
-#[inline]
-pub(crate) fn mul(a: &Inner, b: &Inner) -> Inner {
-    a * b
-}
-#[inline]
-pub(crate) fn mul_i64(a: &Inner, b: i64) -> Inner {
-    a * b
-}
-#[inline]
-pub(crate) fn add_assign(a: &mut Inner, b: &Inner) {
-    *a += b;
-}
-#[inline]
-pub(crate) fn sub_assign(a: &mut Inner, b: &Inner) {
-    *a -= b;
-}
-#[inline]
-pub(crate) fn mul_assign(a: &mut Inner, b: &Inner) {
-    *a *= b;
-}
-#[inline]
-pub(crate) fn add_mul(acc: &mut Inner, b: &Inner, c: &Inner) {
-    *acc += b * c;
-}
-#[inline]
-pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
-    a / b
 }
 #[inline]
 pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {
@@ -191,9 +145,6 @@ pub(crate) fn from_u64_limbs(negative: bool, limbs: &[u64]) -> Inner {
 }
 pub(crate) fn parse_decimal(s: &str) -> Option<Inner> {
     BigInt::parse_bytes(s.as_bytes(), 10)
-}
-pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-    std::fmt::Display::fmt(a, f)
 }
 
 #[cfg(test)]

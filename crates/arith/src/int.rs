@@ -1,13 +1,11 @@
 //! [`Int`]: an arbitrary-precision integer whose kernel is chosen at build
-//! time (num-bigint by default, GMP through rug with the `gmp` feature).
+//! time (num-bigint by default, dashu with the `dashu` feature, GMP through
+//! rug with the `gmp` feature).
 //!
-//! Every crate above this one sees only [`Int`]; the two kernels pass the
+//! Every crate above this one sees only [`Int`]; the three kernels pass the
 //! same tests.
 
-#[cfg(feature = "gmp")]
-use crate::backend_gmp as k;
-#[cfg(not(feature = "gmp"))]
-use crate::backend_num as k;
+use crate::kernel as k;
 
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -386,7 +384,60 @@ mod tests {
         assert_eq!(big("+12"), Int::from(12));
     }
 
+    /// The edges where a kernel could panic or disagree: zeros in gcd
+    /// (dashu's own `gcd(0, 0)` panics), signs in the floor operations and
+    /// `mod_u64`, `0^0`, numbers past one inline word.
+    #[test]
+    fn edges_agree_across_kernels() {
+        let (z, two) = (Int::zero(), Int::from(2));
+        assert_eq!(z.gcd(&z), z);
+        assert_eq!(z.gcd(&Int::from(-6)), Int::from(6));
+        assert_eq!(Int::from(-6).gcd(&z), Int::from(6));
+        assert_eq!(z.pow(0), Int::one());
+        assert_eq!(z.signum(), 0);
+        assert_eq!(z.trailing_zeros(), None);
+        assert_eq!(z.to_u64_limbs(), (false, vec![]));
+        assert_eq!(Int::from_u64_limbs(true, &[]), z);
+        assert_eq!(z.shr_floor(300), z);
+        let big = two.pow(200) + Int::from(7);
+        let nbig = -&big;
+        assert_eq!(nbig.mod_u64(10), 10 - big.mod_u64(10));
+        assert_eq!(nbig.shr_floor(200), Int::from(-2));
+        assert_eq!(nbig.div_floor(&two.pow(200)), Int::from(-2));
+        assert_eq!(nbig.gcd(&two.pow(150)), Int::one());
+        assert_eq!(two.pow(130).gcd(&-two.pow(129)), two.pow(129));
+        assert_eq!(nbig.to_string(), format!("-{big}"));
+    }
+
     proptest! {
+        /// Every kernel operation against `i128` arithmetic, on `i64` operands.
+        #[test]
+        fn kernel_matches_i128(a in any::<i64>(), b in any::<i64>(), s in 0u64..64, p in 1u64..u64::MAX) {
+            let (x, y) = (Int::from(a), Int::from(b));
+            let (a, b) = (i128::from(a), i128::from(b));
+            prop_assert_eq!(x.signum(), a.signum() as i32);
+            prop_assert_eq!(x.bits(), u64::from(128 - a.unsigned_abs().leading_zeros()));
+            prop_assert_eq!(x.abs().to_i128(), Some(a.abs()));
+            prop_assert_eq!(x.shl(s).to_i128(), Some(a << s));
+            prop_assert_eq!(x.shr_floor(s).to_i128(), Some(a >> s));
+            prop_assert_eq!(x.mod_u64(p), a.rem_euclid(i128::from(p)) as u64);
+            prop_assert_eq!(x.trailing_zeros(), (a != 0).then(|| u64::from(a.trailing_zeros())));
+            prop_assert_eq!(Int::from_i128(a * b).to_i128(), Some(a * b));
+            let g = x.gcd(&y).to_i128().unwrap();
+            prop_assert!(g >= 0 && (g == 0) == (a == 0 && b == 0));
+            if g != 0 {
+                prop_assert!(a % g == 0 && b % g == 0);
+                prop_assert_eq!(Int::from_i128(a / g).gcd(&Int::from_i128(b / g)), Int::one());
+            }
+            if b != 0 {
+                let (q, r) = x.div_rem_trunc(&y);
+                prop_assert_eq!((q.to_i128(), r.to_i128()), (Some(a / b), Some(a % b)));
+                prop_assert_eq!(x.div_trunc(&y).to_i128(), Some(a / b));
+                let floor = a.div_euclid(b) - i128::from(b < 0 && a.rem_euclid(b) != 0);
+                prop_assert_eq!(x.div_floor(&y).to_i128(), Some(floor));
+            }
+        }
+
         #[test]
         fn ring_identities(a in any::<i64>(), b in any::<i64>(), c in any::<i64>()) {
             let (x, y, z) = (Int::from(a), Int::from(b), Int::from(c));

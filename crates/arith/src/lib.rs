@@ -2,17 +2,22 @@
 //! ([`Rat`]), outward-rounded `f64` intervals ([`Interval`]) and the [`Ring`]
 //! trait the generic algorithms are written against.
 //!
-//! The big-integer kernel is num-bigint (pure Rust) by default and GMP
-//! (through rug) with the `gmp` feature; nothing above this crate can tell
+//! The big-integer kernel is num-bigint (pure Rust) by default, dashu (pure
+//! Rust) with the `dashu` feature and GMP (through rug) with the `gmp`
+//! feature, which wins if both are on; nothing above this crate can tell
 //! the difference except by speed.
 
 #![warn(missing_docs)]
 
 mod approx;
+#[cfg(all(feature = "dashu", not(feature = "gmp")))]
+mod backend_dashu;
 #[cfg(feature = "gmp")]
 mod backend_gmp;
-#[cfg(not(feature = "gmp"))]
+#[cfg(not(any(feature = "gmp", feature = "dashu")))]
 mod backend_num;
+#[cfg(not(feature = "gmp"))]
+mod backend_refops;
 mod convert;
 mod dual;
 mod int;
@@ -29,9 +34,20 @@ pub use rat::text::{excerpt, ParseRatError};
 pub use rat::Rat;
 pub use ring::{Ring, RingOps};
 
-/// The name of the big-integer kernel in this build: `"num-bigint"` or `"gmp"`.
+// The big-integer kernel of this build, whose functions `Int` wraps.
+#[cfg(all(feature = "dashu", not(feature = "gmp")))]
+use backend_dashu as kernel;
+#[cfg(feature = "gmp")]
+use backend_gmp as kernel;
+#[cfg(not(any(feature = "gmp", feature = "dashu")))]
+use backend_num as kernel;
+
+/// The name of the big-integer kernel in this build: `"num-bigint"`,
+/// `"dashu"` or `"gmp"`.
 pub const BACKEND: &str = if cfg!(feature = "gmp") {
     "gmp"
+} else if cfg!(feature = "dashu") {
+    "dashu"
 } else {
     "num-bigint"
 };

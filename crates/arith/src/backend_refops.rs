@@ -1,0 +1,65 @@
+//! The kernel functions that num-bigint and dashu spell alike: both build
+//! from machine integers with `From` and implement the arithmetic operators
+//! on references, so each function is one expression. GMP (rug) returns
+//! lazy expressions instead and spells these out itself.
+
+/// Defines `from_i64`, `from_u64`, `neg`, `add`, `sub`, `mul`, `mul_i64`,
+/// the three assigning operators, `add_mul`, `div_trunc` and `fmt` for the
+/// calling module's `Inner`.
+macro_rules! reference_operators {
+    () => {
+        #[inline]
+        pub(crate) fn from_i64(v: i64) -> Inner {
+            Inner::from(v)
+        }
+        #[inline]
+        pub(crate) fn from_u64(v: u64) -> Inner {
+            Inner::from(v)
+        }
+        #[inline]
+        pub(crate) fn neg(a: &Inner) -> Inner {
+            -a
+        }
+        #[inline]
+        pub(crate) fn add(a: &Inner, b: &Inner) -> Inner {
+            a + b
+        }
+        #[inline]
+        pub(crate) fn sub(a: &Inner, b: &Inner) -> Inner {
+            a - b
+        }
+        #[inline]
+        pub(crate) fn mul(a: &Inner, b: &Inner) -> Inner {
+            a * b
+        }
+        #[inline]
+        pub(crate) fn mul_i64(a: &Inner, b: i64) -> Inner {
+            a * b
+        }
+        #[inline]
+        pub(crate) fn add_assign(a: &mut Inner, b: &Inner) {
+            *a += b;
+        }
+        #[inline]
+        pub(crate) fn sub_assign(a: &mut Inner, b: &Inner) {
+            *a -= b;
+        }
+        #[inline]
+        pub(crate) fn mul_assign(a: &mut Inner, b: &Inner) {
+            *a *= b;
+        }
+        #[inline]
+        pub(crate) fn add_mul(acc: &mut Inner, b: &Inner, c: &Inner) {
+            *acc += b * c;
+        }
+        /// Division by zero panics, as in every kernel.
+        #[inline]
+        pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
+            a / b
+        }
+        pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            std::fmt::Display::fmt(a, f)
+        }
+    };
+}
+pub(crate) use reference_operators;
