@@ -1,6 +1,6 @@
 //! [`Int`]: an arbitrary-precision integer whose kernel is chosen at build
-//! time (num-bigint by default, dashu with the `dashu` feature, GMP through
-//! rug with the `gmp` feature).
+//! time (dashu by default, num-bigint with the `num-kernel` feature, GMP
+//! through rug with the `gmp` feature).
 //!
 //! Every crate above this one sees only [`Int`]; the three kernels pass the
 //! same tests.
