@@ -62,7 +62,10 @@ impl CharPoly {
             .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
             .collect();
         // Bodies that never turn: in the frame of A's centre (crate::centred).
-        if let (Some(ca), Some(cb)) = (a.centred(), b.centred()) {
+        let centred = (!(a.turns() || b.turns()))
+            .then(|| a.centred().zip(b.centred()))
+            .flatten();
+        if let Some((ca, cb)) = centred {
             return CharPoly {
                 coeffs: normalise_with(centred_characteristic(&ca, &cb), candidates),
             };

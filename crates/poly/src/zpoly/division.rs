@@ -41,10 +41,8 @@ pub(crate) fn content_of(c: &[Int]) -> Int {
         return Int::from_i128(g as i128);
     }
     // Start from the smallest coefficient (the gcd divides it), and reduce
-    // each coefficient modulo the running gcd before the gcd itself: one
-    // division instead of a gcd on full-size numbers, and none at all once
-    // the gcd has reached the content (the usual case after a few entries:
-    // every later coefficient is then divisible by it).
+    // each larger coefficient modulo the running gcd before the gcd itself:
+    // one division instead of a binary gcd on full-size numbers.
     let Some(smallest) = c.iter().filter(|x| !x.is_zero()).min_by_key(|x| x.bits()) else {
         return Int::zero();
     };
@@ -56,10 +54,12 @@ pub(crate) fn content_of(c: &[Int]) -> Int {
         if x.is_zero() {
             continue;
         }
-        let r = x.div_rem_trunc(&g).1;
-        if !r.is_zero() {
-            g = g.gcd(&r);
-        }
+        let r = if x.bits() > g.bits() + 64 {
+            x.div_rem_trunc(&g).1
+        } else {
+            x.clone()
+        };
+        g = g.gcd(&r);
     }
     g
 }
