@@ -40,11 +40,27 @@ impl Rat {
     /// `self` correctly rounded to `digits` decimals (half away from zero),
     /// as text such as `0.539504286803`.
     pub fn to_decimal(&self, digits: u32) -> String {
-        let scale = Int::pow10(digits);
-        let scaled = &self.num.abs() * &scale;
-        let twice = scaled.shl(1) + &self.den;
-        let q = twice.div_floor(&self.den.shl(1));
-        let mut s = q.to_string();
+        // `q = ⌊(2·|num|·10^digits + den) / (2·den)⌋`: in `u128` when every
+        // step fits (the usual output of a query), else in big integers.
+        let small = || {
+            let n = self.num.to_i128()?.unsigned_abs();
+            let d = u128::try_from(self.den.to_i128()?).ok()?;
+            let twice = n
+                .checked_mul(10u128.checked_pow(digits)?)?
+                .checked_mul(2)?
+                .checked_add(d)?;
+            Some(twice / d.checked_mul(2)?)
+        };
+        let (mut s, zero) = match small() {
+            Some(q) => (q.to_string(), q == 0),
+            None => {
+                let scale = Int::pow10(digits);
+                let scaled = &self.num.abs() * &scale;
+                let twice = scaled.shl(1) + &self.den;
+                let q = twice.div_floor(&self.den.shl(1));
+                (q.to_string(), q.signum() == 0)
+            }
+        };
         if digits > 0 {
             let d = digits as usize;
             if s.len() <= d {
@@ -52,7 +68,7 @@ impl Rat {
             }
             s.insert(s.len() - d, '.');
         }
-        if self.num.is_negative() && q.signum() != 0 {
+        if self.num.is_negative() && !zero {
             s.insert(0, '-');
         }
         s
@@ -167,6 +183,15 @@ impl std::str::FromStr for Rat {
 impl std::fmt::Display for Rat {
     /// `p` or `p/q` in lowest terms: the contract's exact time format.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // Machine integers print the same digits, without the big-integer
+        // radix conversion.
+        if let (Some(n), Some(d)) = (self.num.to_i64(), self.den.to_i64()) {
+            return if d == 1 {
+                write!(f, "{n}")
+            } else {
+                write!(f, "{n}/{d}")
+            };
+        }
         if self.den.is_one() {
             write!(f, "{}", self.num)
         } else {
