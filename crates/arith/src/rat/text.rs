@@ -95,9 +95,11 @@ impl Rat {
         if t.chars().any(char::is_whitespace) {
             return Err(invalid());
         }
-        let lower = t.to_ascii_lowercase();
-        let unsigned = lower.strip_prefix(['+', '-']).unwrap_or(&lower);
-        if unsigned == "inf" || unsigned == "nan" || unsigned == "infinity" {
+        let unsigned = t.strip_prefix(['+', '-']).unwrap_or(t);
+        if ["inf", "nan", "infinity"]
+            .iter()
+            .any(|w| unsigned.eq_ignore_ascii_case(w))
+        {
             return Err(ParseRatError::NotFinite(excerpt(t)));
         }
         if let Some((p, q)) = t.split_once('/') {
@@ -147,6 +149,9 @@ impl Rat {
         }
         // |exp| <= MAX_EXPONENT + MAX_TEXT: the text bounds the fraction digits.
         let exp = exp - fp.len() as i64;
+        if let Some(r) = small_decimal(neg, ip, fp, exp) {
+            return Ok(r);
+        }
         let digits = format!("{ip}{fp}");
         let mut num = Int::parse_decimal(&digits).ok_or_else(invalid)?;
         if neg {
@@ -159,6 +164,37 @@ impl Rat {
             Rat::reduce(num, p10)
         })
     }
+}
+
+/// `±(ip fp) · 10^exp` (the digits already checked) in machine integers
+/// when at most 18 digits and `|exp| <= 18`: the value and lowest terms of
+/// the big-integer path, without its allocations.
+fn small_decimal(neg: bool, ip: &str, fp: &str, exp: i64) -> Option<Rat> {
+    if ip.len() + fp.len() > 18 || exp.unsigned_abs() > 18 {
+        return None;
+    }
+    let digits = ip.bytes().chain(fp.bytes());
+    let n = digits.fold(0u64, |n, b| n * 10 + u64::from(b - b'0'));
+    let p10 = 10u64.pow(exp.unsigned_abs() as u32);
+    let (num, den) = if exp >= 0 {
+        (u128::from(n) * u128::from(p10), 1)
+    } else {
+        let g = gcd(n, p10);
+        (u128::from(n / g), p10 / g)
+    };
+    let num = i128::try_from(num).ok()?;
+    Some(Rat {
+        num: Int::from_i128(if neg { -num } else { num }),
+        den: Int::from_u64(den),
+    })
+}
+
+/// Euclid's gcd (`gcd(0, b) = b`).
+fn gcd(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
 }
 
 /// `t` as quoted in an error message: at most [`Rat::QUOTED_TEXT`]
@@ -211,6 +247,41 @@ mod tests {
 
     fn r(s: &str) -> Rat {
         s.parse().unwrap()
+    }
+
+    #[test]
+    fn small_decimals_match_the_big_integer_path() {
+        for (neg, ip, fp, exp) in [
+            (false, "0", "", 0),
+            (true, "0", "000", -3),
+            (false, "1", "2", -1),
+            (true, "12", "50", -2),
+            (false, "999999999", "999999999", -9),
+            (false, "1", "", 18),
+            (true, "999999999999999999", "", 18),
+            (false, "", "000000000000000008", -18),
+            (false, "3", "", -18),
+        ] {
+            let digits = format!("{ip}{fp}");
+            let mut num = Int::parse_decimal(&digits).unwrap();
+            if neg {
+                num = -num;
+            }
+            let p10 = Int::pow10(exp.unsigned_abs() as u32);
+            let big = if exp >= 0 {
+                Rat::from_int(num * p10)
+            } else {
+                Rat::new(num, p10).unwrap()
+            };
+            let small = small_decimal(neg, ip, fp, exp).unwrap();
+            assert_eq!(
+                (&small.num, &small.den),
+                (&big.num, &big.den),
+                "{ip}.{fp}e{exp}"
+            );
+        }
+        assert!(small_decimal(false, "1", "", 19).is_none());
+        assert!(small_decimal(false, "1234567890", "123456789", 0).is_none());
     }
 
     #[test]
