@@ -45,13 +45,9 @@ impl Rat {
         let small = || {
             let n = self.num.to_i128()?.unsigned_abs();
             let d = u128::try_from(self.den.to_i128()?).ok()?;
-            let twice = n
-                .checked_mul(10u128.checked_pow(digits)?)?
-                .checked_mul(2)?
-                .checked_add(d)?;
-            Some(twice / d.checked_mul(2)?)
+            rounded(n, d, digits)
         };
-        let (mut s, zero) = match small() {
+        let (s, zero) = match small() {
             Some(q) => (q.to_string(), q == 0),
             None => {
                 let scale = Int::pow10(digits);
@@ -61,17 +57,24 @@ impl Rat {
                 (q.to_string(), q.signum() == 0)
             }
         };
-        if digits > 0 {
-            let d = digits as usize;
-            if s.len() <= d {
-                s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
-            }
-            s.insert(s.len() - d, '.');
-        }
-        if self.num.is_negative() && !zero {
-            s.insert(0, '-');
-        }
-        s
+        decimal_text(s, self.num.is_negative() && !zero, digits)
+    }
+    /// `Rat::midpoint(lo, hi).to_decimal(digits)`, without forming the
+    /// midpoint in big integers when both ends are machine fractions (the
+    /// rounding depends only on the value, not on its lowest terms).
+    pub fn midpoint_decimal(lo: &Rat, hi: &Rat, digits: u32) -> String {
+        let small = || {
+            let (a, b) = (lo.num.to_i64()?, u64::try_from(lo.den.to_i64()?).ok()?);
+            let (c, d) = (hi.num.to_i64()?, u64::try_from(hi.den.to_i64()?).ok()?);
+            // (a/b + c/d)/2 = n/(2l) over l = lcm(b, d).
+            let l = (b / gcd(b, d)).checked_mul(d)?;
+            let n = i128::from(a)
+                .checked_mul(i128::from(l / b))?
+                .checked_add(i128::from(c).checked_mul(i128::from(l / d))?)?;
+            let q = rounded(n.unsigned_abs(), u128::from(l) * 2, digits)?;
+            Some(decimal_text(q.to_string(), n < 0 && q != 0, digits))
+        };
+        small().unwrap_or_else(|| Rat::midpoint(lo, hi).to_decimal(digits))
     }
     /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`, `+2`) or a
     /// fraction (`-7/2`) exactly.
@@ -166,6 +169,32 @@ impl Rat {
     }
 }
 
+/// `⌊(2·n·10^digits + d) / (2·d)⌋` (`n/d` rounded half up to `digits`
+/// decimals, as an integer), if every step fits in `u128`.
+fn rounded(n: u128, d: u128, digits: u32) -> Option<u128> {
+    let twice = n
+        .checked_mul(10u128.checked_pow(digits)?)?
+        .checked_mul(2)?
+        .checked_add(d)?;
+    Some(twice / d.checked_mul(2)?)
+}
+
+/// The digits of `q` with the point `digits` places from the right
+/// (zeros padded before it) and a `-` when `negative`.
+fn decimal_text(mut s: String, negative: bool, digits: u32) -> String {
+    if digits > 0 {
+        let d = digits as usize;
+        if s.len() <= d {
+            s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
+        }
+        s.insert(s.len() - d, '.');
+    }
+    if negative {
+        s.insert(0, '-');
+    }
+    s
+}
+
 /// `±(ip fp) · 10^exp` (the digits already checked) in machine integers
 /// when at most 18 digits and `|exp| <= 18`: the value and lowest terms of
 /// the big-integer path, without its allocations.
@@ -247,6 +276,37 @@ mod tests {
 
     fn r(s: &str) -> Rat {
         s.parse().unwrap()
+    }
+
+    #[test]
+    fn midpoint_decimal_is_the_midpoint_to_decimal() {
+        let ends = [
+            (
+                "151856956556597/281474976710656",
+                "2429711304905555/4503599627370496",
+            ),
+            (
+                "-8295553289859881/9007199254740992",
+                "-8295553289859663/9007199254740992",
+            ),
+            ("-1/3", "1/3"),
+            ("-1/2000000000000", "1/3000000000000"),
+            ("0", "0"),
+            ("-1", "-1"),
+            ("9223372036854775807", "9223372036854775807"),
+            ("-9223372036854775807/9223372036854775806", "1/3"),
+            ("123456789012345678901234567890", "1/7"),
+        ];
+        for (lo, hi) in ends {
+            for digits in [0, 1, 12, 15, 16, 30] {
+                let (lo, hi) = (r(lo), r(hi));
+                assert_eq!(
+                    Rat::midpoint_decimal(&lo, &hi, digits),
+                    Rat::midpoint(&lo, &hi).to_decimal(digits),
+                    "{lo} {hi} {digits}"
+                );
+            }
+        }
     }
 
     #[test]
