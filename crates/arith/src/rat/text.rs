@@ -312,7 +312,7 @@ mod tests {
     #[test]
     fn small_decimals_match_the_big_integer_path() {
         for (neg, ip, fp, exp) in [
-            (false, "0", "", 0),
+            (false, "0", "", 0i64),
             (true, "0", "000", -3),
             (false, "1", "2", -1),
             (true, "12", "50", -2),
