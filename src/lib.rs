@@ -69,7 +69,7 @@ pub use ccd_scene::{Scene, SceneError, SceneFile, World};
 pub use ccd_timeline::{
     Box3, Branch, Gap, Geometry, Instant, Outcome, Path, Segment, State, Stats, Witness,
 };
-pub use json::{to_json, world_to_json};
+pub use json::{to_json, to_json_pretty, world_to_json, world_to_json_pretty};
 pub use world::{
     run_world, BroadStats, PairResult, WorldContact, WorldOutcome, MAX_CANDIDATE_PAIRS,
 };

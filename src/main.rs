@@ -6,8 +6,8 @@ mod cli {
 }
 
 use ccd_exact::{
-    run, run_batch, run_world, to_json, world_to_json, Arithmetic, BatchOptions, Options, Outcome,
-    Scene, SceneFile,
+    run, run_batch, run_world, to_json_pretty, world_to_json_pretty, Arithmetic, BatchOptions,
+    Options, Outcome, Scene, SceneFile,
 };
 use ccd_scene::{Limit, SceneError, MAX_INPUT_BYTES};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
@@ -226,7 +226,6 @@ fn scene(path: &str, query: &QueryArgs, output: &OutputArgs) -> ExitCode {
         Err(e) => return bad(e),
     };
     let options = query.options();
-    let pretty = |v: serde_json::Value| serde_json::to_string_pretty(&v).unwrap_or_default() + "\n";
     let mut drawn = Ok(());
     let result = SceneFile::from_toml(&text)
         .map_err(ccd_exact::CcdError::from)
@@ -234,7 +233,7 @@ fn scene(path: &str, query: &QueryArgs, output: &OutputArgs) -> ExitCode {
             SceneFile::Pair(s) => run(&s, &options).map(|out| {
                 drawn = output.pictures(path, &s, &out);
                 if output.json {
-                    pretty(to_json(&out))
+                    to_json_pretty(&out) + "\n"
                 } else {
                     cli::table::pair(&out, &options)
                 }
@@ -244,7 +243,7 @@ fn scene(path: &str, query: &QueryArgs, output: &OutputArgs) -> ExitCode {
                     drawn = Err("--svg and --html draw pair scenes only".into());
                 }
                 if output.json {
-                    pretty(world_to_json(&out))
+                    world_to_json_pretty(&out) + "\n"
                 } else {
                     cli::table::world(&out, &options)
                 }

@@ -71,7 +71,7 @@ impl Instant {
     }
     /// The midpoint as a decimal string with `digits` decimals.
     pub fn approx(&self, digits: u32) -> String {
-        self.midpoint().to_decimal(digits)
+        Rat::midpoint_decimal(&self.lo, &self.hi, digits)
     }
 }
 
@@ -107,7 +107,7 @@ impl Box3 {
     }
     /// The midpoint's coordinates as decimal strings with `digits` decimals.
     pub fn approx(&self, digits: u32) -> [String; 3] {
-        self.midpoint().map(|x| x.to_decimal(digits))
+        std::array::from_fn(|i| Rat::midpoint_decimal(&self.lo[i], &self.hi[i], digits))
     }
 }
 

@@ -40,22 +40,41 @@ impl Rat {
     /// `self` correctly rounded to `digits` decimals (half away from zero),
     /// as text such as `0.539504286803`.
     pub fn to_decimal(&self, digits: u32) -> String {
-        let scale = Int::pow10(digits);
-        let scaled = &self.num.abs() * &scale;
-        let twice = scaled.shl(1) + &self.den;
-        let q = twice.div_floor(&self.den.shl(1));
-        let mut s = q.to_string();
-        if digits > 0 {
-            let d = digits as usize;
-            if s.len() <= d {
-                s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
+        // `q = ⌊(2·|num|·10^digits + den) / (2·den)⌋`: in `u128` when every
+        // step fits (the usual output of a query), else in big integers.
+        let small = || {
+            let n = self.num.to_i128()?.unsigned_abs();
+            let d = u128::try_from(self.den.to_i128()?).ok()?;
+            rounded(n, d, digits)
+        };
+        let (s, zero) = match small() {
+            Some(q) => (q.to_string(), q == 0),
+            None => {
+                let scale = Int::pow10(digits);
+                let scaled = &self.num.abs() * &scale;
+                let twice = scaled.shl(1) + &self.den;
+                let q = twice.div_floor(&self.den.shl(1));
+                (q.to_string(), q.signum() == 0)
             }
-            s.insert(s.len() - d, '.');
-        }
-        if self.num.is_negative() && q.signum() != 0 {
-            s.insert(0, '-');
-        }
-        s
+        };
+        decimal_text(s, self.num.is_negative() && !zero, digits)
+    }
+    /// `Rat::midpoint(lo, hi).to_decimal(digits)`, without forming the
+    /// midpoint in big integers when both ends are machine fractions (the
+    /// rounding depends only on the value, not on its lowest terms).
+    pub fn midpoint_decimal(lo: &Rat, hi: &Rat, digits: u32) -> String {
+        let small = || {
+            let (a, b) = (lo.num.to_i64()?, u64::try_from(lo.den.to_i64()?).ok()?);
+            let (c, d) = (hi.num.to_i64()?, u64::try_from(hi.den.to_i64()?).ok()?);
+            // (a/b + c/d)/2 = n/(2l) over l = lcm(b, d).
+            let l = (b / gcd(b, d)).checked_mul(d)?;
+            let n = i128::from(a)
+                .checked_mul(i128::from(l / b))?
+                .checked_add(i128::from(c).checked_mul(i128::from(l / d))?)?;
+            let q = rounded(n.unsigned_abs(), u128::from(l) * 2, digits)?;
+            Some(decimal_text(q.to_string(), n < 0 && q != 0, digits))
+        };
+        small().unwrap_or_else(|| Rat::midpoint(lo, hi).to_decimal(digits))
     }
     /// Parses an integer, a decimal (`0.125`, `-2.5e-3`, `1E5`, `+2`) or a
     /// fraction (`-7/2`) exactly.
@@ -79,9 +98,11 @@ impl Rat {
         if t.chars().any(char::is_whitespace) {
             return Err(invalid());
         }
-        let lower = t.to_ascii_lowercase();
-        let unsigned = lower.strip_prefix(['+', '-']).unwrap_or(&lower);
-        if unsigned == "inf" || unsigned == "nan" || unsigned == "infinity" {
+        let unsigned = t.strip_prefix(['+', '-']).unwrap_or(t);
+        if ["inf", "nan", "infinity"]
+            .iter()
+            .any(|w| unsigned.eq_ignore_ascii_case(w))
+        {
             return Err(ParseRatError::NotFinite(excerpt(t)));
         }
         if let Some((p, q)) = t.split_once('/') {
@@ -131,6 +152,9 @@ impl Rat {
         }
         // |exp| <= MAX_EXPONENT + MAX_TEXT: the text bounds the fraction digits.
         let exp = exp - fp.len() as i64;
+        if let Some(r) = small_decimal(neg, ip, fp, exp) {
+            return Ok(r);
+        }
         let digits = format!("{ip}{fp}");
         let mut num = Int::parse_decimal(&digits).ok_or_else(invalid)?;
         if neg {
@@ -143,6 +167,63 @@ impl Rat {
             Rat::reduce(num, p10)
         })
     }
+}
+
+/// `⌊(2·n·10^digits + d) / (2·d)⌋` (`n/d` rounded half up to `digits`
+/// decimals, as an integer), if every step fits in `u128`.
+fn rounded(n: u128, d: u128, digits: u32) -> Option<u128> {
+    let twice = n
+        .checked_mul(10u128.checked_pow(digits)?)?
+        .checked_mul(2)?
+        .checked_add(d)?;
+    Some(twice / d.checked_mul(2)?)
+}
+
+/// The digits of `q` with the point `digits` places from the right
+/// (zeros padded before it) and a `-` when `negative`.
+fn decimal_text(mut s: String, negative: bool, digits: u32) -> String {
+    if digits > 0 {
+        let d = digits as usize;
+        if s.len() <= d {
+            s = format!("{}{}", "0".repeat(d + 1 - s.len()), s);
+        }
+        s.insert(s.len() - d, '.');
+    }
+    if negative {
+        s.insert(0, '-');
+    }
+    s
+}
+
+/// `±(ip fp) · 10^exp` (the digits already checked) in machine integers
+/// when at most 18 digits and `|exp| <= 18`: the value and lowest terms of
+/// the big-integer path, without its allocations.
+fn small_decimal(neg: bool, ip: &str, fp: &str, exp: i64) -> Option<Rat> {
+    if ip.len() + fp.len() > 18 || exp.unsigned_abs() > 18 {
+        return None;
+    }
+    let digits = ip.bytes().chain(fp.bytes());
+    let n = digits.fold(0u64, |n, b| n * 10 + u64::from(b - b'0'));
+    let p10 = 10u64.pow(exp.unsigned_abs() as u32);
+    let (num, den) = if exp >= 0 {
+        (u128::from(n) * u128::from(p10), 1)
+    } else {
+        let g = gcd(n, p10);
+        (u128::from(n / g), p10 / g)
+    };
+    let num = i128::try_from(num).ok()?;
+    Some(Rat {
+        num: Int::from_i128(if neg { -num } else { num }),
+        den: Int::from_u64(den),
+    })
+}
+
+/// Euclid's gcd (`gcd(0, b) = b`).
+fn gcd(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
 }
 
 /// `t` as quoted in an error message: at most [`Rat::QUOTED_TEXT`]
@@ -167,6 +248,15 @@ impl std::str::FromStr for Rat {
 impl std::fmt::Display for Rat {
     /// `p` or `p/q` in lowest terms: the contract's exact time format.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // Machine integers print the same digits, without the big-integer
+        // radix conversion.
+        if let (Some(n), Some(d)) = (self.num.to_i64(), self.den.to_i64()) {
+            return if d == 1 {
+                write!(f, "{n}")
+            } else {
+                write!(f, "{n}/{d}")
+            };
+        }
         if self.den.is_one() {
             write!(f, "{}", self.num)
         } else {
@@ -186,6 +276,72 @@ mod tests {
 
     fn r(s: &str) -> Rat {
         s.parse().unwrap()
+    }
+
+    #[test]
+    fn midpoint_decimal_is_the_midpoint_to_decimal() {
+        let ends = [
+            (
+                "151856956556597/281474976710656",
+                "2429711304905555/4503599627370496",
+            ),
+            (
+                "-8295553289859881/9007199254740992",
+                "-8295553289859663/9007199254740992",
+            ),
+            ("-1/3", "1/3"),
+            ("-1/2000000000000", "1/3000000000000"),
+            ("0", "0"),
+            ("-1", "-1"),
+            ("9223372036854775807", "9223372036854775807"),
+            ("-9223372036854775807/9223372036854775806", "1/3"),
+            ("123456789012345678901234567890", "1/7"),
+        ];
+        for (lo, hi) in ends {
+            for digits in [0, 1, 12, 15, 16, 30] {
+                let (lo, hi) = (r(lo), r(hi));
+                assert_eq!(
+                    Rat::midpoint_decimal(&lo, &hi, digits),
+                    Rat::midpoint(&lo, &hi).to_decimal(digits),
+                    "{lo} {hi} {digits}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn small_decimals_match_the_big_integer_path() {
+        for (neg, ip, fp, exp) in [
+            (false, "0", "", 0i64),
+            (true, "0", "000", -3),
+            (false, "1", "2", -1),
+            (true, "12", "50", -2),
+            (false, "999999999", "999999999", -9),
+            (false, "1", "", 18),
+            (true, "999999999999999999", "", 18),
+            (false, "", "000000000000000008", -18),
+            (false, "3", "", -18),
+        ] {
+            let digits = format!("{ip}{fp}");
+            let mut num = Int::parse_decimal(&digits).unwrap();
+            if neg {
+                num = -num;
+            }
+            let p10 = Int::pow10(exp.unsigned_abs() as u32);
+            let big = if exp >= 0 {
+                Rat::from_int(num * p10)
+            } else {
+                Rat::new(num, p10).unwrap()
+            };
+            let small = small_decimal(neg, ip, fp, exp).unwrap();
+            assert_eq!(
+                (&small.num, &small.den),
+                (&big.num, &big.den),
+                "{ip}.{fp}e{exp}"
+            );
+        }
+        assert!(small_decimal(false, "1", "", 19).is_none());
+        assert!(small_decimal(false, "1234567890", "123456789", 0).is_none());
     }
 
     #[test]
