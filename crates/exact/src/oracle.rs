@@ -7,7 +7,7 @@ use crate::signs::{model, ClosedForm, Coefficients};
 use ccd_algorithm::{
     At, Candidates, CcdError, Decided, Found, Oracle, SignSet, Signs, Vanishing, VarSet,
 };
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_classify::sign_variations;
 use ccd_motion::{placed_quadric, CharPoly};
 use ccd_poly::ZPoly;
@@ -76,8 +76,50 @@ impl ExactRoot {
     }
 }
 
-/// A sample point with the closed forms and the coefficient signs there.
-type Sample = (Rat, QuarticInvariants<Int>, [i32; 5]);
+/// A sample point: `f`'s coefficients there, their signs, the closed forms
+/// over `f64` intervals (a filter) and, once one of those does not exclude
+/// zero, exactly.
+struct Sample {
+    at: Rat,
+    values: [Int; 5],
+    signs: [i32; 5],
+    filter: QuarticInvariants<Interval>,
+    exact: Option<QuarticInvariants<Int>>,
+}
+
+impl Sample {
+    fn new(at: Rat, values: [Int; 5]) -> Sample {
+        // One common power of two (the closed forms are homogeneous) puts
+        // the largest coefficient near 2^64: no overflow in products of six.
+        let bits = values.iter().map(Int::bits).max().unwrap_or(0) as i64;
+        let scaled = values
+            .each_ref()
+            .map(|v| Interval::from_int_scaled(v, bits - 64));
+        Sample {
+            at,
+            signs: values.each_ref().map(Int::signum),
+            filter: closed_forms(&scaled),
+            values,
+            exact: None,
+        }
+    }
+
+    /// The sign of `q` here: from the enclosure when it excludes zero
+    /// (proven), else from the exact closed form.
+    fn sign(&mut self, q: Quantity) -> i32 {
+        if let Some(s) = self
+            .filter
+            .get(q)
+            .and_then(Interval::sign)
+            .filter(|s| *s != 0)
+        {
+            return s;
+        }
+        let values = &self.values;
+        let exact = self.exact.get_or_insert_with(|| closed_forms(values));
+        exact.get(q).map_or(0, Int::signum)
+    }
+}
 
 /// The exact arithmetic over a rational scene, in `u ∈ [0, 1]`.
 pub struct Exact<'s> {
@@ -154,24 +196,21 @@ impl<'s> Exact<'s> {
 struct SampleSigns<'a, 's>(&'a Exact<'s>, Rat);
 
 impl SampleSigns<'_, '_> {
-    fn with<T>(&self, read: impl FnOnce(&QuarticInvariants<Int>, &[i32; 5]) -> T) -> T {
+    fn with<T>(&self, read: impl FnOnce(&mut Sample) -> T) -> T {
         let mut cache = self.0.sample.borrow_mut();
-        if cache.as_ref().is_none_or(|(at, _, _)| *at != self.1) {
-            let v = self.0.values_at(&self.1);
-            let signs = v.each_ref().map(Int::signum);
-            *cache = Some((self.1.clone(), closed_forms(&v), signs));
+        if cache.as_ref().is_none_or(|s| s.at != self.1) {
+            *cache = Some(Sample::new(self.1.clone(), self.0.values_at(&self.1)));
         }
-        let (_, inv, signs) = cache.as_ref().expect("just filled");
-        read(inv, signs)
+        read(cache.as_mut().expect("just filled"))
     }
 }
 
 impl Signs for SampleSigns<'_, '_> {
     fn sign(&mut self, q: Quantity) -> SignSet {
-        SignSet::exactly(self.with(|inv, _| inv.get(q).map_or(0, Int::signum)))
+        SignSet::exactly(self.with(|s| s.sign(q)))
     }
     fn variations(&mut self) -> VarSet {
-        VarSet::exactly(self.with(|_, s| sign_variations(s)))
+        VarSet::exactly(self.with(|s| sign_variations(&s.signs)))
     }
 }
 
