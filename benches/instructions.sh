@@ -15,7 +15,7 @@ SCENES=${SCENES:-"benches/scenes/rigid-deg2.toml benches/scenes/affine-deg2.toml
 tmp=$(mktemp -d)
 count() { # binary scene mode... -> "run process"
   local bin=$1 scene=$2; shift 2
-  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$bin" "$scene" --json "$@" >/dev/null 2>"$tmp/err"
+  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$bin" "$scene" --json "$@" >/dev/null 2>"$tmp/err" || true
   local total run
   total=$(callgrind_annotate "$tmp/cg" 2>/dev/null | awk '/PROGRAM TOTALS/ && !done {gsub(",", "", $1); print $1; done = 1}')
   run=$(callgrind_annotate --inclusive=yes "$tmp/cg" 2>/dev/null | awk '/src\/lib.rs:ccd_exact::run / && !done {gsub(",", "", $1); print $1; done = 1}')
@@ -32,7 +32,7 @@ for s in $SCENES; do
     if [ -n "$OLD" ]; then
       # shellcheck disable=SC2086
       read -r orun ototal < <(count "$OLD" "$s" $mode)
-      printf '\t%s\t%s\t%s' "$orun" "$ototal" "$(python3 -c "print(f'{($run - $orun) / $orun * 100:+.1f} %')")"
+      printf '\t%s\t%s\t%s' "$orun" "$ototal" "$(python3 -c "print(f'{($run - $orun) / $orun * 100:+.1f} %' if $orun else 'n/a')")"
     fi
     printf '\n'
   done

@@ -27,7 +27,11 @@ fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let mut reps = 31;
     if let Some(i) = args.iter().position(|a| a == "--reps") {
-        reps = args.get(i + 1).and_then(|s| s.parse().ok()).unwrap_or(reps);
+        reps = args
+            .get(i + 1)
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(reps)
+            .max(1);
         args.drain(i..(i + 2).min(args.len()));
     }
     println!("scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed");

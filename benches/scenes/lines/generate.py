@@ -6,7 +6,10 @@ that about two thirds collide. Short decimal numbers, as users write
 them. Deterministic (seed 2026): `python3 generate.py` rewrites the files.
 """
 
+import os
 import random
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def fmt(x):
@@ -61,7 +64,7 @@ kind = "translation"
 center = [{vec(b0)}, {vec(b1)}]
 orientation = {vec(quats[1])}
 """
-        with open(f"line{i:02d}.toml", "w") as out:
+        with open(os.path.join(HERE, f"line{i:02d}.toml"), "w") as out:
             out.write(text)
 
 

@@ -24,6 +24,11 @@ use std::rc::Rc;
 /// second of this machine's time to form and isolate (docs/termination.md).
 pub const MAX_EXACT_BITS: u64 = 1 << 25;
 
+/// The placements' numbers (bits of both bodies, `PlacedQuadric::bits`)
+/// up to which a first-contact query forms `f(λ; u)` of two bodies that
+/// never turn before reading the state at `t0` off it.
+const EARLY_F_BITS: u64 = 1024;
+
 /// An upper estimate of the size in bits of `sr0`'s closed form: it is
 /// homogeneous of degree 6 in the coefficients `f_k` of `f(λ; u)` (Section
 /// 4), so it has degree `≤ 6·deg f` in `u` and coefficients of at most
@@ -170,17 +175,23 @@ impl<'s> Exact<'s> {
             .expect("f(λ; u) is set up before roots are asked for")
     }
 
-    /// The coefficients of `f(λ; u)` at `u` (times a positive factor):
-    /// straight from the placements before `f(λ; u)` is set up (the state
-    /// at `t0` of a first-contact query), from `f` after.
+    /// The coefficients of `f(λ; u)` at `u` (times a positive factor), from
+    /// `f` once it is set up. Before (the state at `t0` of a first-contact
+    /// query): from `f` formed early when both bodies never turn and their
+    /// numbers are short (then `f` costs less than the placements' quadrics
+    /// and [`Oracle::prepare`] reuses it), else straight from the placements
+    /// (long numbers: `f` may cost seconds, and the query may stop at `t0`).
     fn values_at(&self, u: &Rat) -> [Int; 5] {
         match &self.f {
             Some(f) => f.char_poly().at_scaled(u),
-            None if !(self.bodies.a.turns() || self.bodies.b.turns()) => self
-                .early
-                .borrow_mut()
-                .get_or_insert_with(|| self.char_poly())
-                .at_scaled(u),
+            None if !(self.bodies.a.turns() || self.bodies.b.turns())
+                && self.bodies.a.bits() + self.bodies.b.bits() <= EARLY_F_BITS =>
+            {
+                self.early
+                    .borrow_mut()
+                    .get_or_insert_with(|| self.char_poly())
+                    .at_scaled(u)
+            }
             None => characteristic(&self.bodies.a.quadric_at(u), &self.bodies.b.quadric_at(u)),
         }
     }

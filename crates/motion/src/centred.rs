@@ -7,8 +7,9 @@
 //!
 //! A placed body's integer quadric is `A = Nᵀ·D·N` with `N` its inverse
 //! placement `[[X, y(u)], [0, z]]` scaled to a primitive integer matrix
-//! ([`crate::matrices`]); for a body that does not turn, `X` and `z` are
-//! constants and its centre is `c(u) = −X⁻¹·y(u)`. The translation
+//! ([`crate::matrices`]); for a body that does not turn and moves along a
+//! polynomial curve, `X` and `z` are constants and its centre is
+//! `c(u) = −X⁻¹·y(u)`. The translation
 //! `T = [[I, c_A], [0, 1]]` has determinant 1, so
 //! `det(λA + B) = det(Tᵀ(λA + B)T)`, and in that frame
 //!

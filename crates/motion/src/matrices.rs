@@ -255,8 +255,30 @@ impl PlacedQuadric {
         congruence(&self.inverse(), &self.diagonal)
     }
 
-    /// Whether the body's orientation is constant on the span (static or
-    /// translating): then `f(λ; u)` is cheap ([`crate::centred`]).
+    /// The longest number of the placement and body quadric, in bits (the
+    /// larger of a rational's numerator and denominator): a size estimate.
+    pub fn bits(&self) -> u64 {
+        let poly = |p: &QPoly| {
+            let s = p.scale();
+            s.numer().bits().max(s.denom().bits()) + p.prim().max_bits()
+        };
+        let frame = match &self.frame {
+            Frame::Rigid { m, n, center, w } => m
+                .iter()
+                .flatten()
+                .chain(center)
+                .chain([n, w])
+                .map(poly)
+                .max(),
+            Frame::Affine { l, d, w } => l.iter().flatten().chain(d).chain([w]).map(poly).max(),
+        };
+        let diagonal = self.diagonal.iter().map(ZPoly::max_bits).max();
+        frame.max(diagonal).unwrap_or(0)
+    }
+
+    /// Whether the body's orientation changes on the span (a rotating rigid
+    /// or an affine motion); a static or translating body does not turn, and
+    /// `f(λ; u)` of two such bodies is cheap ([`crate::centred`]).
     pub fn turns(&self) -> bool {
         match &self.frame {
             Frame::Rigid { m, n, .. } => {
