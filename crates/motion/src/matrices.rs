@@ -278,7 +278,8 @@ impl PlacedQuadric {
 
     /// Whether the body's orientation changes on the span (a rotating rigid
     /// or an affine motion); a static or translating body does not turn, and
-    /// `f(λ; u)` of two such bodies is cheap ([`crate::centred`]).
+    /// `f(λ; u)` of two such bodies is cheap: [`crate::CharPoly::from_placed`]
+    /// sets it up in the frame of A's centre.
     pub fn turns(&self) -> bool {
         match &self.frame {
             Frame::Rigid { m, n, .. } => {
