@@ -412,3 +412,50 @@ impl Oracle for Exact<'_> {
         };
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Sample;
+    use ccd_arith::{Int, Rat};
+    use ccd_subres::{closed_forms, Quantity};
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+        /// A sample's signs through the `f64` interval filter are the exact
+        /// signs, on long coefficients (up to about 1100 bits, beyond
+        /// `f64`'s range once multiplied) and on coefficients where the
+        /// closed forms vanish or nearly cancel: `f = (λ − r)²·(λ² + aλ + b)`
+        /// scaled, and the same with one coefficient nudged by 1.
+        #[test]
+        fn sample_signs_are_exact(
+            r in -50i64..50, a in -50i64..50, b in -50i64..50,
+            scale in 0u32..1100, nudge in 0usize..6, raw in proptest::collection::vec(-1000i64..1000, 5),
+        ) {
+            let s = Int::one().shl(scale as u64);
+            let (r, a, b) = (Int::from(r), Int::from(a), Int::from(b));
+            // (λ² − 2rλ + r²)(λ² + aλ + b), high → low.
+            let two_r = &r * &Int::from(2);
+            let r2 = &r * &r;
+            let structured = [
+                Int::one(),
+                &a - &two_r,
+                &(&b - &(&two_r * &a)) + &r2,
+                &(&r2 * &a) - &(&two_r * &b),
+                &r2 * &b,
+            ];
+            let random: [Int; 5] = std::array::from_fn(|k| Int::from(raw[k]));
+            for base in [structured, random] {
+                let mut v: [Int; 5] = base.each_ref().map(|c| c * &s);
+                if nudge < 5 {
+                    v[nudge] = &v[nudge] + &Int::one();
+                }
+                let exact = closed_forms(&v);
+                let mut sample = Sample::new(Rat::zero(), v.clone());
+                for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                    let want = exact.get(q).map_or(0, Int::signum);
+                    proptest::prop_assert_eq!(sample.sign(q), want, "{:?} of {:?}", q, v);
+                }
+            }
+        }
+    }
+}
