@@ -14,8 +14,8 @@ use std::time::Instant;
 
 use ccd_broad::BroadError;
 use ccd_exact::{
-    run, run_world, to_json, world_to_json, Arithmetic, CcdError, Options, Outcome, Scene,
-    SceneFile, World, WorldOutcome,
+    run, run_world, to_json_pretty, world_to_json_pretty, Arithmetic, CcdError, Options, Outcome,
+    Scene, SceneFile, World, WorldOutcome,
 };
 use ccd_scene::SceneError;
 use pyo3::exceptions::{PyIndexError, PyRuntimeError, PyValueError};
@@ -33,7 +33,7 @@ struct Query {
 impl Query {
     /// The result as the CLI's `--json` prints it (pretty, no final newline).
     fn json(&self) -> String {
-        pretty(&to_json(&self.outcome))
+        to_json_pretty(&self.outcome)
     }
     /// The SVG picture (timeline strip and contact sections).
     #[pyo3(signature = (title = ""))]
@@ -45,11 +45,6 @@ impl Query {
     fn html(&self, title: &str) -> String {
         ccd_picture::html(&self.scene, &self.outcome, title)
     }
-}
-
-/// JSON text as the CLI prints it (pretty, without the CLI's final newline).
-fn pretty(value: &serde_json::Value) -> String {
-    serde_json::to_string_pretty(value).unwrap_or_default()
 }
 
 /// One answered world: the world and its outcome.
@@ -84,14 +79,14 @@ impl WorldQuery {
     /// The result as the CLI's `--json` prints it for the world (pretty, no
     /// final newline); written with the GIL released.
     fn json(&self, py: Python<'_>) -> String {
-        py.detach(|| pretty(&world_to_json(&self.outcome)))
+        py.detach(|| world_to_json_pretty(&self.outcome))
     }
     /// Queried pair `k`'s result as `ccd-exact --json` prints it for that
     /// pair's scene (the world's span, bodies `a` and `b`); `None` when the
     /// pair's query has no answer (its `error` in the world's JSON).
     fn pair_json(&self, k: usize) -> PyResult<Option<String>> {
         match self.outcome.pairs.get(k).map(|p| &p.result) {
-            Some(Ok(o)) => Ok(Some(pretty(&to_json(o)))),
+            Some(Ok(o)) => Ok(Some(to_json_pretty(o))),
             Some(Err(_)) => Ok(None),
             None => Err(PyIndexError::new_err(format!(
                 "pair {k}: the world has {} queried pairs",
