@@ -1,5 +1,6 @@
-//! The dashu big-integer kernel (pure Rust), selected by the `dashu`
-//! feature. Numbers of up to 128 bits live inline, without a heap buffer.
+//! The dashu big-integer kernel (pure Rust), the default (ccd-arith's
+//! `dashu` feature). Numbers of up to 128 bits live inline, without a heap
+//! buffer.
 //!
 //! dashu panics where the other kernels answer: `gcd(0, 0)` (num-bigint and
 //! GMP give 0) and `IBig % u64` on a negative remainder (it converts the

@@ -1,4 +1,5 @@
-//! The pure-Rust big-integer kernel (num-bigint): the default build.
+//! The num-bigint big-integer kernel (pure Rust), selected by the
+//! `num-kernel` feature or a build without ccd-arith's default features.
 
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer as _;
