@@ -199,14 +199,15 @@ pub fn run<O: Oracle>(mut o: O, opts: &Options) -> Result<Outcome, CcdError> {
         ..Stats::default()
     };
     // A first-contact query reads the state at t0 before any set-up, to
-    // stop there when the bodies are not separate; a full query sets up
-    // first (the exact arithmetic then reads t0 off f(λ; t)).
+    // stop there when the bodies are proven not separate (a guessed state
+    // goes on as a full query does, which may leave the span a gap); a full
+    // query sets up first (the exact arithmetic then reads t0 off f(λ; t)).
     let t0 = o.domain()[0].clone();
     if !opts.first_contact_only {
         o.prepare()?;
     }
     let state0 = state_at(&o, &t0);
-    let stop_early = opts.first_contact_only && state0.state != State::Separate;
+    let stop_early = opts.first_contact_only && state0.certified && state0.state != State::Separate;
     let mut walk = Walk::default();
     let mut throughout = None;
     if !stop_early {
