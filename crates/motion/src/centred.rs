@@ -133,25 +133,6 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
     [c(4), c(3), c(2), c(1), c(0)]
 }
 
-/// `K = XᵀD₃X` and `κ = −d₄·z²` of the primitive integer inverse placement
-/// `[[X/g, ·], [0, z/g]]` (`X`, `z` integral, `g` the gcd of its
-/// coefficients) and the integer body diagonal `D`.
-pub(crate) fn centred_blocks(x: &Mat3<Int>, z: &Int, g: &Int, d: &[Int; 4]) -> (Mat3<Int>, Int) {
-    let xi: Mat3<Int> = x
-        .each_ref()
-        .map(|row| row.each_ref().map(|e| e.div_exact(g)));
-    let k = std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            (0..3).fold(Int::zero(), |mut acc, r| {
-                acc.add_mul(&xi[r][i], &(&d[r] * &xi[r][j]));
-                acc
-            })
-        })
-    });
-    let zi = z.div_exact(g);
-    (k, -&(&d[3] * &(&zi * &zi)))
-}
-
 #[cfg(test)]
 mod tests {
     use crate::kinds::{Bezier, Body, Motion};

@@ -2,7 +2,7 @@
 //! `A(u) ∝ N(u)ᵀ·D·N(u)` (`N ∝ M⁻¹`) with integer polynomial entries in
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
-use crate::centred::{centred_blocks, Centred};
+use crate::centred::Centred;
 use crate::curve::{to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
@@ -303,10 +303,11 @@ impl PlacedQuadric {
             return None;
         }
         // Every input over one denominator D: m = M/D, n = n'/D, w = w'/D,
-        // center = C/D. Each entry of N = [[w·mᵀ, −mᵀ·center], [0, n·w]]
-        // (rigid_inverse) is a product of two inputs, so N·D² is integral,
-        // and the primitive integer matrix (to_integer_matrix) is N·D²/g
-        // with g the gcd of its coefficients: integer arithmetic only.
+        // center = C/D. Each entry of N = rigid_inverse(m, n, center, w) is
+        // a product of two inputs, so N·D² is integral, and the primitive
+        // integer matrix (to_integer_matrix) is N·D²/g with g the gcd of its
+        // coefficients: integer arithmetic only. N is rigid_inverse at a
+        // zero centre (the blocks X, z) plus the centre column.
         let (m, n, w) = (
             m.each_ref().map(|r| r.each_ref().map(|e| e.coeff(0))),
             n.coeff(0),
@@ -327,10 +328,10 @@ impl PlacedQuadric {
             int(&w),
         );
         let center: [Vec<Int>; 3] = center.each_ref().map(|c| c.iter().map(int).collect());
-        let x: Mat3<Int> = std::array::from_fn(|i| std::array::from_fn(|j| &w * &m[j][i]));
-        let z = &n * &w;
+        let blocks = rigid_inverse(&m, &n, &[Int::zero(), Int::zero(), Int::zero()], &w);
+        // The centre column −mᵀ·C(u), coefficient by coefficient.
         let len = center.iter().map(Vec::len).max().unwrap_or(0);
-        let y = (0..3).flat_map(|i| {
+        let column = (0..3).flat_map(|i| {
             let (m, center) = (&m, &center);
             (0..len).map(move |k| {
                 (0..3).fold(Int::zero(), |mut s, j| {
@@ -341,21 +342,23 @@ impl PlacedQuadric {
                 })
             })
         });
-        let g = x
+        let g = blocks
             .iter()
             .flatten()
-            .chain([&z])
             .cloned()
-            .chain(y)
+            .chain(column)
             .fold(Int::zero(), |g, v| g.gcd(&v));
         if g.is_zero() {
             return None;
         }
-        let d = self.diagonal.each_ref().map(|e| e.coeff(0));
-        let (k, kappa) = centred_blocks(&x, &z, &g, &d);
+        // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
+        let centred = congruence(
+            &blocks.map(|row| row.map(|e| e.div_exact(&g))),
+            &self.diagonal.each_ref().map(|e| e.coeff(0)),
+        );
         Some(Centred {
-            k,
-            kappa,
+            k: std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
+            kappa: -&centred[3][3],
             centre: center.map(ZPoly::new),
             denominator: w,
         })
