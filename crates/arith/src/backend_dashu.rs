@@ -15,10 +15,6 @@ pub(crate) type Inner = IBig;
 crate::backend_refops::reference_operators!();
 
 #[inline]
-pub(crate) fn is_zero(a: &Inner) -> bool {
-    a.is_zero()
-}
-#[inline]
 pub(crate) fn signum(a: &Inner) -> i32 {
     // dashu's zero has the positive sign.
     match a.sign() {
@@ -30,10 +26,6 @@ pub(crate) fn signum(a: &Inner) -> i32 {
 #[inline]
 pub(crate) fn bits(a: &Inner) -> u64 {
     a.bit_len() as u64
-}
-#[inline]
-pub(crate) fn abs(a: &Inner) -> Inner {
-    a.abs()
 }
 #[inline]
 pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {

@@ -55,22 +55,7 @@ pub(crate) fn mul(a: &Inner, b: &Inner) -> Inner {
 pub(crate) fn mul_i64(a: &Inner, b: i64) -> Inner {
     Integer::from(a * b)
 }
-#[inline]
-pub(crate) fn add_assign(a: &mut Inner, b: &Inner) {
-    *a += b;
-}
-#[inline]
-pub(crate) fn sub_assign(a: &mut Inner, b: &Inner) {
-    *a -= b;
-}
-#[inline]
-pub(crate) fn mul_assign(a: &mut Inner, b: &Inner) {
-    *a *= b;
-}
-#[inline]
-pub(crate) fn add_mul(acc: &mut Inner, b: &Inner, c: &Inner) {
-    *acc += b * c;
-}
+crate::backend_refops::assigning_operators!();
 #[inline]
 pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
     Integer::from(a / b)

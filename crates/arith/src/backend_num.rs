@@ -10,10 +10,6 @@ pub(crate) type Inner = BigInt;
 crate::backend_refops::reference_operators!();
 
 #[inline]
-pub(crate) fn is_zero(a: &Inner) -> bool {
-    a.is_zero()
-}
-#[inline]
 pub(crate) fn signum(a: &Inner) -> i32 {
     match a.sign() {
         Sign::Minus => -1,
@@ -24,10 +20,6 @@ pub(crate) fn signum(a: &Inner) -> i32 {
 #[inline]
 pub(crate) fn bits(a: &Inner) -> u64 {
     a.bits()
-}
-#[inline]
-pub(crate) fn abs(a: &Inner) -> Inner {
-    a.abs()
 }
 #[inline]
 pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {

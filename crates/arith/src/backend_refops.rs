@@ -1,16 +1,26 @@
 //! The kernel functions that num-bigint and dashu spell alike: both build
 //! from machine integers with `From` and implement the arithmetic operators
 //! on references, so each function is one expression. GMP (rug) returns
-//! lazy expressions instead and spells these out itself.
+//! lazy expressions instead and spells those out itself; the assigning
+//! operators all three kernels share.
 
-/// Defines `from_i64`, `from_u64`, `neg`, `add`, `sub`, `mul`, `mul_i64`,
-/// the three assigning operators, `add_mul`, `div_trunc` and `fmt` for the
-/// calling module's `Inner`.
+/// Defines `from_i64`, `is_zero`, `abs`, `from_u64`, `neg`, `add`, `sub`,
+/// `mul`, `mul_i64`, the assigning operators ([`assigning_operators`]),
+/// `div_trunc` and `fmt` for the calling module's `Inner`.
+#[cfg(not(feature = "gmp"))]
 macro_rules! reference_operators {
     () => {
         #[inline]
         pub(crate) fn from_i64(v: i64) -> Inner {
             Inner::from(v)
+        }
+        #[inline]
+        pub(crate) fn is_zero(a: &Inner) -> bool {
+            a.is_zero()
+        }
+        #[inline]
+        pub(crate) fn abs(a: &Inner) -> Inner {
+            a.abs()
         }
         #[inline]
         pub(crate) fn from_u64(v: u64) -> Inner {
@@ -36,6 +46,24 @@ macro_rules! reference_operators {
         pub(crate) fn mul_i64(a: &Inner, b: i64) -> Inner {
             a * b
         }
+        crate::backend_refops::assigning_operators!();
+        /// Division by zero panics, as in every kernel.
+        #[inline]
+        pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
+            a / b
+        }
+        pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            std::fmt::Display::fmt(a, f)
+        }
+    };
+}
+#[cfg(not(feature = "gmp"))]
+pub(crate) use reference_operators;
+
+/// Defines `add_assign`, `sub_assign`, `mul_assign` and `add_mul`, which
+/// every kernel (GMP's too) spells with the assigning operators.
+macro_rules! assigning_operators {
+    () => {
         #[inline]
         pub(crate) fn add_assign(a: &mut Inner, b: &Inner) {
             *a += b;
@@ -52,14 +80,6 @@ macro_rules! reference_operators {
         pub(crate) fn add_mul(acc: &mut Inner, b: &Inner, c: &Inner) {
             *acc += b * c;
         }
-        /// Division by zero panics, as in every kernel.
-        #[inline]
-        pub(crate) fn div_trunc(a: &Inner, b: &Inner) -> Inner {
-            a / b
-        }
-        pub(crate) fn fmt(a: &Inner, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-            std::fmt::Display::fmt(a, f)
-        }
     };
 }
-pub(crate) use reference_operators;
+pub(crate) use assigning_operators;

@@ -21,7 +21,6 @@ mod backend_gmp;
     any(not(feature = "dashu"), feature = "num-kernel")
 ))]
 mod backend_num;
-#[cfg(not(feature = "gmp"))]
 mod backend_refops;
 mod convert;
 mod dual;

@@ -81,13 +81,12 @@ impl ExactRoot {
     }
 }
 
-/// A sample point: `f`'s coefficients there, their signs, the closed forms
-/// over `f64` intervals (a filter) and, once one of those does not exclude
-/// zero, exactly.
+/// A sample point: `f`'s coefficients there, the closed forms over `f64`
+/// intervals (a filter) and, once one of those does not exclude zero,
+/// exactly.
 struct Sample {
     at: Rat,
     values: [Int; 5],
-    signs: [i32; 5],
     filter: QuarticInvariants<Interval>,
     exact: Option<QuarticInvariants<Int>>,
 }
@@ -102,7 +101,6 @@ impl Sample {
             .map(|v| Interval::from_int_scaled(v, bits - 64));
         Sample {
             at,
-            signs: values.each_ref().map(Int::signum),
             filter: closed_forms(&scaled),
             values,
             exact: None,
@@ -221,7 +219,7 @@ impl Signs for SampleSigns<'_, '_> {
         SignSet::exactly(self.with(|s| s.sign(q)))
     }
     fn variations(&mut self) -> VarSet {
-        VarSet::exactly(self.with(|s| sign_variations(&s.signs)))
+        VarSet::exactly(self.with(|s| sign_variations(&s.values.each_ref().map(Int::signum))))
     }
 }
 
