@@ -294,7 +294,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
         let f = FilterBernstein::from_intervals(coeffs);
-        let undecided = coeffs.len() < 2 || lo >= hi || f.signs().is_none();
+        let undecided = coeffs.is_empty() || lo >= hi || f.signs().is_none();
         let stack = if undecided {
             vec![]
         } else {

@@ -229,3 +229,27 @@ fn exact_work_bound_stops_and_says_so() {
     assert_eq!(free.by_ref().count(), 2);
     assert!(!free.exhausted() && free.work() > 1_000);
 }
+
+/// A constant (a degree-0 Bernstein form, e.g. `sr0` of a static pair) whose
+/// one enclosure excludes zero has no roots, proven: the filter decides it
+/// instead of giving up; an enclosure holding zero stays undecided.
+#[test]
+fn filtered_constant_is_decided() {
+    let model = std::sync::Arc::new(crate::SignProbe::new(&ZPoly::from_i64s(&[-3])));
+    let mut iter = crate::RootIter::filtered(
+        model.clone(),
+        &Rat::zero(),
+        &Rat::one(),
+        &[Interval { lo: -3.5, hi: -2.5 }],
+    );
+    assert_eq!(iter.by_ref().count(), 0);
+    assert!(!iter.undecided());
+    let mut iter = crate::RootIter::filtered(
+        model,
+        &Rat::zero(),
+        &Rat::one(),
+        &[Interval { lo: -1.0, hi: 0.5 }],
+    );
+    assert_eq!(iter.by_ref().count(), 0);
+    assert!(iter.undecided());
+}
