@@ -8,7 +8,7 @@
 use crate::RingOps;
 
 /// The dual number `v + d·ε`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dual<T> {
     /// Value.
     pub v: T,

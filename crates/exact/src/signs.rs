@@ -22,10 +22,10 @@
 //! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
 //! products of the closed forms).
 
-use ccd_arith::{Dual, Int, Interval, Rat, RingOps};
+use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::ZPoly;
-use ccd_solver::{ExactJet, ScaledPoly, SignModel};
+use ccd_solver::{ball_horner, BallJet, ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, Quantity};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -48,9 +48,14 @@ pub(crate) struct Coefficients {
     /// Each closed form's constant term and nominal top coefficient
     /// ([`Coefficients::extremes`]), likewise.
     extremes: [OnceLock<(Int, Int)>; 5],
+    /// `f_k · 2^(−shift)` in double-word balls (low → high), formed on
+    /// first need.
+    balls: OnceLock<[Vec<DwBall>; 5]>,
     /// The last point's jets: the quantities at one root are asked for at
     /// the same point.
     last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
+    /// The last point's jets in balls, likewise.
+    last_ball: RefCell<Option<(Rat, [Dual<DwBall>; 5])>>,
     /// The last interval's enclosures of `(f_k, f_k′, f_k″)`, likewise.
     last_box: RefCell<Option<(Interval, [Jet2; 5])>>,
 }
@@ -69,7 +74,9 @@ impl Coefficients {
             shift,
             polys: Default::default(),
             extremes: Default::default(),
+            balls: OnceLock::new(),
             last: RefCell::new(None),
+            last_ball: RefCell::new(None),
             last_box: RefCell::new(None),
         }
     }
@@ -192,12 +199,39 @@ impl ClosedForm {
 }
 
 impl ClosedForm {
+    /// `(f_k(m), f_k′(m))·2^(−shift)` in balls at a dyadic `m` (Horner on
+    /// the balls of the coefficients), cached for the last `m`; `None` when
+    /// `m` itself is no exact ball.
+    fn ball_jets(&self, m: &Rat) -> Option<[Dual<DwBall>; 5]> {
+        if let Some((at, jets)) = &*self.f.last_ball.borrow() {
+            if at == m {
+                return Some(*jets);
+            }
+        }
+        let x = DwBall::from_rat(m);
+        if x.rad != 0.0 || !x.is_known() {
+            return None;
+        }
+        let balls = self.f.balls.get_or_init(|| {
+            std::array::from_fn(|k| {
+                let p = &self.f.f.coeffs[k];
+                p.coeffs()
+                    .iter()
+                    .map(|c| DwBall::from_int_scaled(c, self.f.shift))
+                    .collect()
+            })
+        });
+        let jets: [Dual<DwBall>; 5] = std::array::from_fn(|k| ball_horner(&balls[k], &x));
+        *self.f.last_ball.borrow_mut() = Some((m.clone(), jets));
+        Some(jets)
+    }
+
     /// Enclosures of `(f_k, f_k′, f_k″)` over `x` (scaled), cached for the
     /// last `x`.
     fn box_jets(&self, x: Interval) -> [Jet2; 5] {
         if let Some((at, jets)) = &*self.f.last_box.borrow() {
             if *at == x {
-                return jets.clone();
+                return *jets;
             }
         }
         let jets: [Jet2; 5] = std::array::from_fn(|k| {
@@ -214,7 +248,7 @@ impl ClosedForm {
                 },
             }
         });
-        *self.f.last_box.borrow_mut() = Some((x, jets.clone()));
+        *self.f.last_box.borrow_mut() = Some((x, jets));
         jets
     }
 }
@@ -246,6 +280,20 @@ impl SignModel for ClosedForm {
             value_exp: scale,
             slope_exp: scale,
         }
+    }
+
+    /// The closed form over dual numbers of double-word balls of
+    /// `(f_k, f_k′)(m)`: `σ·(q(m), q′(m))` within a few `2^(−100)` of the
+    /// terms, for the exponents of [`SignModel::exact_jet_at`].
+    fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
+        let j = m.dyadic_exponent()? as i64;
+        let q = self.of(&self.ball_jets(m)?);
+        (q.v.is_known() && q.d.is_known()).then(|| BallJet {
+            value: q.v,
+            slope: q.d,
+            slope_exp: j * self.f.f.degree() as i64 * weight(self.q)
+                + self.f.shift * weight(self.q),
+        })
     }
 
     /// The closed form over `f64` dual numbers of `(f_k, f_k′)(x)`.
@@ -323,6 +371,13 @@ mod tests {
                 };
                 prop_assert!(holds(v, sigma(exact.eval_rat(&m))));
                 prop_assert!(holds(d, sigma(exact.derivative().eval_rat(&m))));
+                // The double-word jet holds the same values, on the exact
+                // jet's exponent.
+                let ball = model.ball_jet_at(&m).expect("short inputs stay in range");
+                let in_ball = |b: DwBall, r: Rat| b.ends().is_some_and(|(lo, hi)| lo <= r && r <= hi);
+                prop_assert!(in_ball(ball.value, sigma(exact.eval_rat(&m))));
+                prop_assert!(in_ball(ball.slope, sigma(exact.derivative().eval_rat(&m))));
+                prop_assert_eq!(ball.slope_exp, model.exact_jet_at(&m).slope_exp);
                 let point = Interval::from_rat(&m);
                 if point.lo == point.hi {
                     prop_assert!(holds(model.enclose(point), sigma(exact.eval_rat(&m))));

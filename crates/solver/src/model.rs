@@ -4,9 +4,9 @@
 //! explicit polynomial; [`ExactJet`], exact values at a dyadic point.
 
 use crate::scaled::ScaledPoly;
-use ccd_arith::{Int, Interval, Rat};
+use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::ZPoly;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
 /// ([`RealRoot::sign_with`](crate::RealRoot::sign_with)): with its `f64` view (one conversion of every
@@ -18,6 +18,8 @@ use std::sync::Arc;
 pub struct SignProbe {
     q: ZPoly,
     sq: ScaledPoly,
+    /// `q·2^(−shift)` in double-word balls (low → high), on first need.
+    balls: OnceLock<Vec<DwBall>>,
 }
 
 impl SignProbe {
@@ -30,6 +32,7 @@ impl SignProbe {
         SignProbe {
             sq: ScaledPoly::new(&q),
             q,
+            balls: OnceLock::new(),
         }
     }
 
@@ -64,6 +67,42 @@ impl ExactJet {
     }
 }
 
+/// The size (coefficients times bits) from which an explicit polynomial's
+/// jet is taken in balls first ([`SignProbe`]'s [`SignModel::ball_jet_at`]):
+/// below it, one exact Horner pass is cheaper than the balls' bookkeeping
+/// (Example 5.1's `sr11`, of degree 8 with short coefficients, was 3 % slower
+/// with balls).
+pub const BALL_WORTH: u64 = 4096;
+
+/// `(p(x), p′(x))` by Horner's rule over balls, for coefficients low →
+/// high (zero for none).
+pub fn ball_horner(coeffs: &[DwBall], x: &DwBall) -> Dual<DwBall> {
+    let mut it = coeffs.iter().rev();
+    let mut v = it.next().copied().unwrap_or_else(DwBall::zero);
+    let mut d = DwBall::zero();
+    for c in it {
+        d = d.times(x).plus(&v);
+        v = v.times(x).plus(c);
+    }
+    Dual { v, d }
+}
+
+/// Double-word enclosures of `σ·q(m)` and `σ·q′(m)` at a dyadic point
+/// ([`SignModel::ball_jet_at`]): the scale `σ` of [`ExactJet`], so that
+/// `value` holds `ExactJet::value·2^(−value_exp)` and `slope` holds
+/// `ExactJet::slope·2^(−slope_exp)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BallJet {
+    /// Encloses `σ·q(m)`.
+    pub value: DwBall,
+    /// Encloses `σ·q′(m)`.
+    pub slope: DwBall,
+    /// [`ExactJet::slope_exp`]: `σ·q′(m)·2^slope_exp` is an integer (which
+    /// lets [`RealRoot`](crate::RealRoot) tell when the ball pins down the
+    /// exact jet's `f64` enclosure).
+    pub slope_exp: i64,
+}
+
 /// A quantity `q(t)` as [`RealRoot`](crate::RealRoot) needs it, both as the function whose
 /// root it is (refinement) and as a quantity whose sign is asked for at a
 /// root ([`RealRoot::sign_with`](crate::RealRoot::sign_with)): for a constant `σ > 0` of the model's
@@ -84,6 +123,13 @@ pub trait SignModel {
     fn enclose_second(&self, x: Interval) -> Interval;
     /// `σ·q(m)` and `σ·q′(m)` exactly, for a dyadic `m`.
     fn exact_jet_at(&self, m: &Rat) -> ExactJet;
+    /// `σ·q(m)` and `σ·q′(m)` in double-word balls, for a dyadic `m`:
+    /// what [`RealRoot`](crate::RealRoot) tries before
+    /// [`SignModel::exact_jet_at`], which it needs only when these do not
+    /// decide. `None` (the default) when the model has no such view.
+    fn ball_jet_at(&self, _m: &Rat) -> Option<BallJet> {
+        None
+    }
     /// `(σ·q(m), σ·q′(m))` enclosed, for a dyadic `m`.
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
         self.exact_jet_at(m).enclose()
@@ -121,6 +167,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     }
     fn exact_jet_at(&self, m: &Rat) -> ExactJet {
         (**self).exact_jet_at(m)
+    }
+    fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
+        (**self).ball_jet_at(m)
     }
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
         (**self).value_and_slope_at(m)
@@ -163,6 +212,34 @@ impl SignModel for SignProbe {
     /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
     /// from one Horner pass, then scaled like the `f64` view: by shifts at
     /// a dyadic `m` (the solver's case), by an enclosed division otherwise.
+    /// Horner over the balls of `q·2^(−shift)` at an exact ball of `m`;
+    /// `None` for a short `q` (below [`BALL_WORTH`]), whose exact Horner
+    /// pass costs less than the balls' bookkeeping.
+    fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
+        let n = self.q.degree().unwrap_or(0) as i64;
+        if (n as u64 + 1) * self.q.max_bits() < BALL_WORTH {
+            return None;
+        }
+        let k = m.dyadic_exponent()? as i64;
+        let x = DwBall::from_rat(m);
+        if x.rad != 0.0 || !x.is_known() {
+            return None;
+        }
+        let shift = self.sq.shift();
+        let balls = self.balls.get_or_init(|| {
+            self.q
+                .coeffs()
+                .iter()
+                .map(|c| DwBall::from_int_scaled(c, shift))
+                .collect()
+        });
+        let jet = ball_horner(balls, &x);
+        (jet.v.is_known() && jet.d.is_known()).then_some(BallJet {
+            value: jet.v,
+            slope: jet.d,
+            slope_exp: shift + k * (n - 1).max(0),
+        })
+    }
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
         if m.dyadic_exponent().is_some() {
             return self.exact_jet_at(m).enclose();

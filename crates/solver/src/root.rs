@@ -3,14 +3,48 @@
 //! interval with exact rational ends; refinable to any width, and able to
 //! decide the exact sign of any polynomial at it.
 
-use crate::model::{ExactJet, SignModel, SignProbe};
-use ccd_arith::{Int, Interval, Rat};
+use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
+use ccd_arith::{DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
 /// The round of [`RealRoot::sign_with`] from which, once `q(α) ≠ 0` is
 /// proven, the exact Bernstein test on `q` runs besides the enclosures.
 const EXACT_SIGN_ROUND: u32 = 3;
+
+/// The exponent `k` of an exact Newton step's grid `2^(−k)` (see
+/// [`RealRoot::exact_newton_jump`]): about `max(w², target/4)`, no finer
+/// than the Taylor model's reach (`sup|p″|·w²/|p′|`, from the slope's `f64`
+/// enclosure `slope` and `second ⊇ p″(I)`), and at least `w/4`.
+fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> i64 {
+    // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
+    // cut δ from the root has a linear part near |p′|·δ: cuts closer
+    // than `reach` would need exact evaluations, so when the model
+    // reaches well inside the enclosure the cuts go no closer.
+    let w_f = w.to_f64();
+    let reach =
+        second.lo.abs().max(second.hi.abs()) * w_f * w_f / slope.lo.abs().min(slope.hi.abs());
+    let model_k = if !slope.contains_zero() && reach > 0.0 && reach < w_f / 16.0 {
+        (-reach.log2()).floor() as i64
+    } else {
+        i64::MAX
+    };
+    // −log2 of a positive rational, rounded up (within one bit).
+    let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
+    neg_log2(&(w * w))
+        .min(neg_log2(target) + 2)
+        .min(model_k)
+        .max(neg_log2(w) + 2)
+}
+
+/// What one round of Taylor tests from balls found
+/// ([`RealRoot::ball_round`]).
+enum BallRound {
+    /// The sign of `q(α)`, proven.
+    Sign(i32),
+    /// Neither exact Taylor test decides this round, and `q(m) ≠ 0`.
+    Open,
+}
 
 /// What a float Newton jump achieved.
 enum Jump {
@@ -196,30 +230,16 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let quarter = &w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
+        let second = self.base.enclose_second(self.enclosure());
+        if let Some(done) = self.ball_newton_jump(target, &w, &m, second) {
+            return done;
+        }
         let jet = self.base.exact_jet_at(&m);
         if jet.slope.is_zero() {
             return false;
         }
-        let second = self.base.enclose_second(self.enclosure());
-        // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
-        // cut δ from the root has a linear part near |p′|·δ: cuts closer
-        // than `reach` would need exact evaluations, so when the model
-        // reaches well inside the enclosure the cuts go no closer.
         let (_, slope) = jet.enclose();
-        let w_f = w.to_f64();
-        let reach =
-            second.lo.abs().max(second.hi.abs()) * w_f * w_f / slope.lo.abs().min(slope.hi.abs());
-        let model_k = if !slope.contains_zero() && reach > 0.0 && reach < w_f / 16.0 {
-            (-reach.log2()).floor() as i64
-        } else {
-            i64::MAX
-        };
-        // −log2 of a positive rational, rounded up (within one bit).
-        let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
-        let k = neg_log2(&(&w * &w))
-            .min(neg_log2(target) + 2)
-            .min(model_k)
-            .max(neg_log2(&w) + 2);
+        let k = newton_exponent(&w, target, slope, second);
         // 2^k·x = (a·S·2^(k−j) − V·2^(k+s−v))/S, over a common power of two
         // that keeps every exponent nonnegative.
         let (v, s) = (jet.value_exp, jet.slope_exp);
@@ -248,6 +268,124 @@ impl<M: SignModel + Clone> RealRoot<M> {
             Rat::dyadic(&x_scaled + &Int::from(2), k as u64),
             taylor_sign,
         )
+    }
+
+    /// [`RealRoot::exact_newton_jump`] from the model's double-word jet
+    /// ([`SignModel::ball_jet_at`]), when the balls pin down everything the
+    /// exact jet would give: the slope is nonzero, its `f64` enclosure (the
+    /// one the exact slope rounds to: every integer the ball allows has the
+    /// same leading 64 bits), hence the same `k`, and `X` (both ends of the
+    /// ball of `2^k·(m − q(m)/q′(m))` have the same floor). The cuts are
+    /// then the exact step's, and each sign is proven by a ball or, where
+    /// that does not decide, exactly: the very same step, without exact
+    /// arithmetic on the closed form. `None` when anything is left open.
+    fn ball_newton_jump(
+        &mut self,
+        target: &Rat,
+        w: &Rat,
+        m: &Rat,
+        second: Interval,
+    ) -> Option<bool> {
+        let jet = self.base.ball_jet_at(m)?;
+        jet.slope.sign().filter(|s| *s != 0)?;
+        // The exact slope S·2^(−s) lies in the ball: S between two integers.
+        let (lo, hi) = jet.slope.ends()?;
+        let (s_min, s_max) = (
+            -(-lo.mul_pow2(jet.slope_exp)).floor(),
+            hi.mul_pow2(jet.slope_exp).floor(),
+        );
+        if s_min.signum() != s_max.signum() || s_min.top_bits() != s_max.top_bits() {
+            return None;
+        }
+        let slope = Interval::from_int_scaled(&s_min, jet.slope_exp);
+        let k = newton_exponent(w, target, slope, second);
+        // X = ⌊2^k·m − 2^k·δ⌋ with δ = σq(m)/σq′(m) in a ball.
+        let (dl, dh) = jet.value.div(&jet.slope).mul_pow2(k).ends()?;
+        let a = m.mul_pow2(k);
+        let x_scaled = (&a - &dh).floor();
+        if x_scaled != (&a - &dl).floor() {
+            return None;
+        }
+        let ball_sign = |root: &RealRoot<M>, x: &Rat| {
+            let d = x - m;
+            let linear = jet.value.plus(&jet.slope.times(&DwBall::from_rat(&d)));
+            let dd = Interval::from_rat(&d);
+            let remainder = DwBall::from_interval(second * dd.square() * Interval::point(0.5));
+            Some(
+                linear
+                    .plus(&remainder)
+                    .sign()
+                    .filter(|s| *s != 0)
+                    .unwrap_or_else(|| root.base.sign_at(x)),
+            )
+        };
+        Some(self.cut_both(
+            Rat::dyadic(&x_scaled - &Int::one(), k as u64),
+            Rat::dyadic(&x_scaled + &Int::from(2), k as u64),
+            ball_sign,
+        ))
+    }
+
+    /// One round of [`RealRoot::sign_with`]'s Taylor tests from
+    /// double-word balls of `q(m)` and `q′(m)` instead of exact values:
+    /// [`BallRound::Sign`] when the symmetric form `q(m) + q′(m)·(I − m) ±
+    /// sup|q″(I)|·r²/2` decides over the balls (then the exact form decides
+    /// too, with the same sign: its linear part lies in the balls and its
+    /// remainder is no larger), [`BallRound::Open`] when the balls prove
+    /// that neither exact test would decide this round and that `q(m) ≠ 0`,
+    /// `None` when they cannot tell (the exact jet is needed).
+    ///
+    /// With `L = q(m) + q′(m)·(I − m)` over `I` (`m ∈ I`, so `I − m ∋ 0`),
+    /// `ρ = sup|q″(I)|·r²/2` and `r = max|I − m|`, the exact Taylor test
+    /// stays open iff `min L − ρ ≤ 0 ≤ max L + ρ`; the `f64` test encloses
+    /// `L + [min(0, q″⁻), max(0, q″⁺)]·r²/2`, which holds zero (so stays
+    /// open) when `min L + min(0, q″⁻)·r²/2 ≤ 0 ≤ max L + max(0, q″⁺)·r²/2`.
+    fn ball_round(&self, m: &Rat, jet: &BallJet, second: Interval) -> Option<BallRound> {
+        let bound = second.lo.abs().max(second.hi.abs());
+        if !bound.is_finite() {
+            return None;
+        }
+        let (dl, dh) = (
+            DwBall::from_rat(&(&self.lo - m)),
+            DwBall::from_rat(&(&self.hi - m)),
+        );
+        let (r_up, r_dn) = (
+            dl.abs_upper().max(dh.abs_upper()),
+            dl.abs_lower().max(dh.abs_lower()),
+        );
+        // r²/2 rounded up and down (three roundings, and underflow).
+        let half_sq_up = r_up * r_up * 0.5 * (1.0 + 4.0 * f64::EPSILON) + f64::MIN_POSITIVE;
+        let half_sq_dn =
+            (r_dn * r_dn * 0.5 * (1.0 - 4.0 * f64::EPSILON) - f64::MIN_POSITIVE).max(0.0);
+        let (l, h) = (
+            jet.value.plus(&jet.slope.times(&dl)),
+            jet.value.plus(&jet.slope.times(&dh)),
+        );
+        let remainder = DwBall {
+            hi: 0.0,
+            lo: 0.0,
+            rad: bound * half_sq_up * (1.0 + 4.0 * f64::EPSILON),
+        };
+        let at = |b: &DwBall| b.plus(&remainder).sign().filter(|s| *s != 0);
+        if let (Some(sl), Some(sh)) = (at(&l), at(&h)) {
+            if sl == sh {
+                return Some(BallRound::Sign(sl));
+            }
+        }
+        // Both exact tests open, proven from the balls' extremes.
+        let (min_up, max_dn) = (l.upper().min(h.upper()), l.lower().max(h.lower()));
+        let rho_dn = bound * half_sq_dn * (1.0 - 4.0 * f64::EPSILON);
+        let taylor_open = min_up <= rho_dn && max_dn >= -rho_dn;
+        // The f64 test's remainder ends, toward zero.
+        let r_lo = ((second.lo.min(0.0) * half_sq_dn) * (1.0 - 4.0 * f64::EPSILON)
+            + f64::MIN_POSITIVE)
+            .min(0.0);
+        let r_hi = ((second.hi.max(0.0) * half_sq_dn) * (1.0 - 4.0 * f64::EPSILON)
+            - f64::MIN_POSITIVE)
+            .max(0.0);
+        let float_open = min_up <= -r_lo && max_dn >= -r_hi;
+        let value_nonzero = jet.value.abs_lower() >= f64::MIN_POSITIVE.sqrt();
+        (taylor_open && float_open && value_nonzero).then_some(BallRound::Open)
     }
 
     /// Shrinks the enclosure until `hi − lo <= max_width` (or the root turns
@@ -355,7 +493,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
     ///    narrower than about `|q(α)/q'(α)|`. It runs first with the
     ///    linear part in `f64` (cheap), then with it exact
     ///    (`RealRoot::exact_taylor_sign`: no underflow, however small
-    ///    `q(α)` is beside `q`'s coefficients);
+    ///    `q(α)` is beside `q`'s coefficients). Before either, the model's
+    ///    double-word jet ([`SignModel::ball_jet_at`]) is tried: it decides
+    ///    only where the exact form would, and proves when neither would,
+    ///    so that the exact jet is formed only when the balls cannot tell
+    ///    (`RealRoot::ball_round`; every step is the same as without it);
     /// 3. once `q(α) ≠ 0` is proven, at rounds 3, 6, 12, …, Descartes' rule
     ///    on `q`'s exact Bernstein coefficients over `I`.
     ///
@@ -378,23 +520,37 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 return s;
             }
             let m = Rat::dyadic_in(&self.lo, &self.hi);
-            let jet = model.exact_jet_at(&m);
-            let (qm, dqm) = jet.enclose();
-            // I − m exactly, then enclosed: an f64 interval around α itself
-            // could not be narrower than an ulp of α.
-            let offset =
-                Interval::from_rat(&(&self.lo - &m)).hull(&Interval::from_rat(&(&self.hi - &m)));
-            let half = Interval::point(0.5);
             let second = model.enclose_second(whole);
-            if let Some(s) = decided(qm + dqm * offset + second * offset.square() * half) {
-                return s;
-            }
-            // The same Taylor form with its linear part kept exact: no
-            // underflow however small `q(α)` is beside `q`'s coefficients.
-            if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
-                return s;
-            }
-            if nonzero.is_none() && (round >= 1 || qm.contains_zero()) {
+            // The Taylor forms from double-word balls first: they decide
+            // only where the exact forms below would, with the same sign,
+            // and tell when those would not decide either.
+            let ball = model
+                .ball_jet_at(&m)
+                .and_then(|jet| self.ball_round(&m, &jet, second));
+            let value_zero = match ball {
+                Some(BallRound::Sign(s)) => return s,
+                Some(BallRound::Open) => false,
+                None => {
+                    let jet = model.exact_jet_at(&m);
+                    let (qm, dqm) = jet.enclose();
+                    // I − m exactly, then enclosed: an f64 interval around α
+                    // itself could not be narrower than an ulp of α.
+                    let offset = Interval::from_rat(&(&self.lo - &m))
+                        .hull(&Interval::from_rat(&(&self.hi - &m)));
+                    let half = Interval::point(0.5);
+                    if let Some(s) = decided(qm + dqm * offset + second * offset.square() * half) {
+                        return s;
+                    }
+                    // The same Taylor form with its linear part kept exact:
+                    // no underflow however small `q(α)` is beside `q`'s
+                    // coefficients.
+                    if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
+                        return s;
+                    }
+                    qm.contains_zero()
+                }
+            };
+            if nonzero.is_none() && (round >= 1 || value_zero) {
                 let q = model.exact();
                 let g = self.base.exact().gcd(q);
                 if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {

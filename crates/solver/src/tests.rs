@@ -253,3 +253,90 @@ fn filtered_constant_is_decided() {
     assert_eq!(iter.by_ref().count(), 0);
     assert!(iter.undecided());
 }
+
+/// A model that hides its double-word view: [`crate::SignModel::ball_jet_at`]
+/// is `None`, so every step takes the exact jet.
+#[derive(Clone, Debug)]
+struct ExactOnly(std::sync::Arc<crate::SignProbe>);
+
+impl crate::SignModel for ExactOnly {
+    fn enclose(&self, x: Interval) -> Interval {
+        self.0.enclose(x)
+    }
+    fn enclose_second(&self, x: Interval) -> Interval {
+        self.0.enclose_second(x)
+    }
+    fn exact_jet_at(&self, m: &Rat) -> crate::ExactJet {
+        self.0.exact_jet_at(m)
+    }
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        self.0.approx_value_and_slope(x)
+    }
+    fn sign_at(&self, x: &Rat) -> i32 {
+        self.0.sign_at(x)
+    }
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        self.0.admits_root_at(x)
+    }
+    fn exact(&self) -> &ZPoly {
+        self.0.exact()
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+    /// The double-word jets change no step: refining a root and deciding
+    /// signs at it give the very same enclosures and signs with them as
+    /// with exact jets only, on polynomials long enough for the balls
+    /// (coefficients of 1400–2200 bits), with roots near each other and
+    /// quantities that vanish at the root or nearly do.
+    #[test]
+    fn ball_jets_change_no_step(
+        roots in proptest::collection::vec((1i64..=997, 2i64..=998), 2..5),
+        scale in 900u32..1400, nudge in -2i64..3, digits in 15u32..60,
+        q_root in 0usize..4, q_off in -3i64..4,
+    ) {
+        let mut factors: Vec<(Rat, u32)> = Vec::new();
+        for (p, q) in roots {
+            let r = Rat::from_frac(p.min(q - 1), q);
+            if !factors.iter().any(|(x, _)| *x == r) {
+                factors.push((r, 1));
+            }
+        }
+        // A big constant and a nudge: irrational roots near the rational ones.
+        let big = Int::from(3).pow(scale);
+        let p = &product(&factors).mul_int(&big) + &ZPoly::from_i64s(&[nudge]);
+        let roots = all_roots(&p, &Rat::zero(), &Rat::one());
+        let target = Rat::new(Int::one(), Int::pow10(digits)).unwrap();
+        // q = p′·big + small: nonzero at every simple root, or vanishing at one.
+        let r = &factors[q_root % factors.len()].0;
+        let q = &(&linear(r) * &ZPoly::from_i64s(&[1, 1, 1])).mul_int(&big) + &ZPoly::from_i64s(&[q_off]);
+        let probe = std::sync::Arc::new(crate::SignProbe::new(&q));
+        // Positive with a positive curvature at r: decided by the one-sided
+        // f64 Taylor test where the symmetric one is still open.
+        let q2 = &(&linear(r).pow(2) * &ZPoly::from_i64s(&[1, 1])).mul_int(&big) + &ZPoly::from_i64s(&[q_off.abs() + 1]);
+        let probe2 = std::sync::Arc::new(crate::SignProbe::new(&q2));
+        for root in roots {
+            let (lo, hi) = (root.lo().clone(), root.hi().clone());
+            // The same root over the same (squarefree, primitive) polynomial.
+            let base = ExactOnly(std::sync::Arc::new(crate::SignProbe::new(root.poly())));
+            let mut exact = match root.exact_value() {
+                Some(v) => crate::RealRoot::exact(base, v.clone()),
+                None => {
+                    let s = root.poly().sign_at(&lo);
+                    crate::RealRoot::isolated(base, lo, hi, s)
+                }
+            };
+            let mut balls = root.clone();
+            prop_assert_eq!(balls.sign_with(&probe2), exact.sign_with(&ExactOnly(probe2.clone())));
+            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
+            prop_assert_eq!(balls.sign_with(&probe), exact.sign_with(&ExactOnly(probe.clone())));
+            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
+            balls.refine_to(&target);
+            exact.refine_to(&target);
+            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
+            prop_assert_eq!(balls.sign_with(&probe), exact.sign_with(&ExactOnly(probe.clone())));
+            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
+        }
+    }
+}
