@@ -359,7 +359,7 @@ impl<M: SignModel + Clone> RootIter<M> {
                 self.charge(b, 1);
             }
         }
-        let mid_sign = mid_sign.unwrap_or_else(|| self.base.sign_at(&mid));
+        let mid_sign = mid_sign.unwrap_or_else(|| self.base.filtered_sign_at(&mid));
         if mid_sign == 0 {
             right.set_endpoint_zero(false);
         }
