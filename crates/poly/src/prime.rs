@@ -228,6 +228,205 @@ pub(crate) struct NttPrime {
 
 static PRIMES: Mutex<Vec<NttPrime>> = Mutex::new(Vec::new());
 
+/// The first table primes, as [`next_prime`] finds them (a test checks
+/// it): a process needs no Miller–Rabin search for its first 48 primes
+/// (about 0.1M instructions a prime, paid once per process, i.e. per CLI
+/// run).
+const FIRST: [NttPrime; 48] = [
+    NttPrime {
+        p: 0x3ffffffffeb00001,
+        root: 0x25f89e017e7ce1ca,
+    },
+    NttPrime {
+        p: 0x3ffffffffa000001,
+        root: 0x146621ea4c40b146,
+    },
+    NttPrime {
+        p: 0x3ffffffff9f00001,
+        root: 0x1984e856df0ee329,
+    },
+    NttPrime {
+        p: 0x3ffffffff9000001,
+        root: 0x2aa8e2e75c02c01c,
+    },
+    NttPrime {
+        p: 0x3ffffffff7b00001,
+        root: 0x1c6d45960b3fcd33,
+    },
+    NttPrime {
+        p: 0x3ffffffff7600001,
+        root: 0x1ff6c4eb0712f0c8,
+    },
+    NttPrime {
+        p: 0x3ffffffff6700001,
+        root: 0x90cca1d5b04f18a,
+    },
+    NttPrime {
+        p: 0x3ffffffff5e00001,
+        root: 0x8e5c78d440db306,
+    },
+    NttPrime {
+        p: 0x3ffffffff4f00001,
+        root: 0x1adfc21c4970e0ac,
+    },
+    NttPrime {
+        p: 0x3ffffffff4600001,
+        root: 0x25fd3235be219098,
+    },
+    NttPrime {
+        p: 0x3ffffffff3700001,
+        root: 0x3cab0b83f135af12,
+    },
+    NttPrime {
+        p: 0x3ffffffff1b00001,
+        root: 0x1cdfd8fe5019f221,
+    },
+    NttPrime {
+        p: 0x3ffffffff0c00001,
+        root: 0x1caa7581754892c8,
+    },
+    NttPrime {
+        p: 0x3fffffffece00001,
+        root: 0x2c838c0df60c011a,
+    },
+    NttPrime {
+        p: 0x3fffffffeaf00001,
+        root: 0xc15f0f0bf40f1fb,
+    },
+    NttPrime {
+        p: 0x3fffffffea300001,
+        root: 0x2c2783f0fa38ab73,
+    },
+    NttPrime {
+        p: 0x3fffffffea000001,
+        root: 0xf9a7dfcd359d6aa,
+    },
+    NttPrime {
+        p: 0x3fffffffe9a00001,
+        root: 0x31763c3e1e3c42c0,
+    },
+    NttPrime {
+        p: 0x3fffffffe9500001,
+        root: 0x130103eebc59829,
+    },
+    NttPrime {
+        p: 0x3fffffffe5000001,
+        root: 0x6a734213fa856b8,
+    },
+    NttPrime {
+        p: 0x3fffffffe3b00001,
+        root: 0x3dec66e9694b266d,
+    },
+    NttPrime {
+        p: 0x3fffffffe2b00001,
+        root: 0x22d7cfbe4a0bf80a,
+    },
+    NttPrime {
+        p: 0x3fffffffe2900001,
+        root: 0x4baa8e38ec1a5e9,
+    },
+    NttPrime {
+        p: 0x3fffffffe2300001,
+        root: 0x1111ff880a4a77ad,
+    },
+    NttPrime {
+        p: 0x3fffffffdf900001,
+        root: 0x2f2735d94d319001,
+    },
+    NttPrime {
+        p: 0x3fffffffdf500001,
+        root: 0x25297a1984cc0ee6,
+    },
+    NttPrime {
+        p: 0x3fffffffdb600001,
+        root: 0x36f263ac50b327fc,
+    },
+    NttPrime {
+        p: 0x3fffffffda100001,
+        root: 0x143fc91897e1f9de,
+    },
+    NttPrime {
+        p: 0x3fffffffd9800001,
+        root: 0x322657d177e2fd19,
+    },
+    NttPrime {
+        p: 0x3fffffffd9000001,
+        root: 0x36d719c3788820d6,
+    },
+    NttPrime {
+        p: 0x3fffffffd6900001,
+        root: 0x27fa949957d55ffa,
+    },
+    NttPrime {
+        p: 0x3fffffffd5900001,
+        root: 0x359baacef8f82b10,
+    },
+    NttPrime {
+        p: 0x3fffffffd3600001,
+        root: 0x1066c4ec47b040c6,
+    },
+    NttPrime {
+        p: 0x3fffffffd2a00001,
+        root: 0x3c6866bf7437ade9,
+    },
+    NttPrime {
+        p: 0x3fffffffd1800001,
+        root: 0x38e9400a7e325e43,
+    },
+    NttPrime {
+        p: 0x3fffffffd1500001,
+        root: 0x2905f2a12ab5484e,
+    },
+    NttPrime {
+        p: 0x3fffffffce200001,
+        root: 0x27760a74ceadfe78,
+    },
+    NttPrime {
+        p: 0x3fffffffcc000001,
+        root: 0x22324ae1ea6544a4,
+    },
+    NttPrime {
+        p: 0x3fffffffca800001,
+        root: 0x2ad929e0f5fe0659,
+    },
+    NttPrime {
+        p: 0x3fffffffc9c00001,
+        root: 0xc5324193c613555,
+    },
+    NttPrime {
+        p: 0x3fffffffc9100001,
+        root: 0x35271c1772cda34e,
+    },
+    NttPrime {
+        p: 0x3fffffffc8d00001,
+        root: 0xdd84ceb54aa9e38,
+    },
+    NttPrime {
+        p: 0x3fffffffc8800001,
+        root: 0x2890a58a5144e368,
+    },
+    NttPrime {
+        p: 0x3fffffffc8700001,
+        root: 0x283f55f8eaf02dbd,
+    },
+    NttPrime {
+        p: 0x3fffffffc8200001,
+        root: 0x113dd545ef0c50fa,
+    },
+    NttPrime {
+        p: 0x3fffffffc7b00001,
+        root: 0x23c530d188a30d23,
+    },
+    NttPrime {
+        p: 0x3fffffffc7900001,
+        root: 0x110c8f62918e88ec,
+    },
+    NttPrime {
+        p: 0x3fffffffc5d00001,
+        root: 0x1ff9ca1636ad54ad,
+    },
+];
+
 /// The next table prime below `p_prev`, found by testing `c·2^20 + 1` for
 /// decreasing `c`.
 fn next_prime(p_prev: u64) -> NttPrime {
@@ -257,24 +456,31 @@ fn next_prime(p_prev: u64) -> NttPrime {
 /// The first `count` table primes (descending from `2^62`), generated on
 /// first use and cached for the life of the process.
 pub(crate) fn ntt_primes(count: usize) -> Vec<NttPrime> {
+    let mut table = table_up_to(count);
+    table.truncate(count);
+    table
+}
+
+/// The table extended to at least `count` primes: [`FIRST`], then searched.
+fn table_up_to(count: usize) -> Vec<NttPrime> {
     let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
+    if table.is_empty() {
+        table.extend_from_slice(&FIRST);
+    }
     while table.len() < count {
         let prev = table.last().map_or(1u64 << 62, |q| q.p);
         let next = next_prime(prev);
         table.push(next);
     }
-    table[..count].to_vec()
+    table.clone()
 }
 
 /// The `i`-th table prime.
 pub(crate) fn ntt_prime(i: usize) -> NttPrime {
-    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
-    while table.len() <= i {
-        let prev = table.last().map_or(1u64 << 62, |q| q.p);
-        let next = next_prime(prev);
-        table.push(next);
-    }
-    table[i]
+    FIRST
+        .get(i)
+        .copied()
+        .unwrap_or_else(|| table_up_to(i + 1)[i])
 }
 
 #[cfg(test)]
@@ -288,6 +494,27 @@ mod tests {
             && (2..)
                 .take_while(|d| d * d <= n)
                 .all(|d| !n.is_multiple_of(d))
+    }
+
+    /// The built-in primes are the ones the search finds, in order, each
+    /// with a root of unity of order exactly `2^MAX_LOG_LEN`.
+    #[test]
+    fn built_in_primes_are_the_searched_ones() {
+        let mut prev = 1u64 << 62;
+        for q in FIRST {
+            let found = next_prime(prev);
+            assert_eq!((q.p, q.root), (found.p, found.root));
+            let f = Fp::new(q.p);
+            let w = f.enter(q.root);
+            assert_ne!(f.pow(w, 1 << (MAX_LOG_LEN - 1)), f.one);
+            assert_eq!(f.pow(w, 1 << MAX_LOG_LEN), f.one);
+            prev = q.p;
+        }
+        assert_eq!(
+            ntt_primes(50)[..48].iter().map(|q| q.p).collect::<Vec<_>>(),
+            FIRST.map(|q| q.p)
+        );
+        assert_eq!(ntt_prime(49).p, ntt_primes(50)[49].p);
     }
 
     #[test]
