@@ -352,6 +352,14 @@ impl Oracle for Exact<'_> {
         let f = self.coefficients();
         let (zero, one) = (Rat::zero(), Rat::one());
         if q == Quantity::Sr0 && self.filtered && attempt == 0 {
+            // A constant f (a static pair): sr0 is the constant the filter
+            // proved nonzero at 1/2, so it has no roots.
+            if f.char_poly().degree() == 0 {
+                return Some(Candidates {
+                    degree: f.sr0_degree(),
+                    roots: Box::new(std::iter::empty()),
+                });
+            }
             let bernstein = crate::filter::certified_bernstein(f.char_poly(), Quantity::Sr0);
             let roots = RootIter::filtered(model(f, q), &zero, &one, &bernstein);
             return Some(Candidates {
