@@ -26,7 +26,7 @@ use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::ZPoly;
 use ccd_solver::{ball_horner, BallJet, ExactJet, ScaledPoly, SignModel};
-use ccd_subres::{closed_form, Quantity};
+use ccd_subres::{closed_form, isobaric_weight, Quantity};
 use std::cell::RefCell;
 use std::rc::Rc;
 use std::sync::OnceLock;
@@ -287,7 +287,28 @@ impl SignModel for ClosedForm {
     /// terms, for the exponents of [`SignModel::exact_jet_at`].
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
         let j = m.dyadic_exponent()? as i64;
-        let q = self.of(&self.ball_jets(m)?);
+        let jets = self.ball_jets(m)?;
+        // λ → 2^e·λ balances |a_4|·2^(4e) against |a_0| (coefficients of
+        // wildly different sizes would underflow the products), and
+        // 2^(−e·weight) undoes it exactly (isobaric_weight).
+        let log2 = |b: &DwBall| (b.hi != 0.0).then(|| b.hi.abs().log2());
+        let e = match (log2(&jets[0].v), log2(&jets[4].v)) {
+            (Some(top), Some(bottom)) => ((bottom - top) / 4.0).round() as i64,
+            _ => 0,
+        };
+        let balanced: [Dual<DwBall>; 5] = std::array::from_fn(|i| {
+            let k = e * (4 - i as i64);
+            Dual {
+                v: jets[i].v.mul_pow2(k),
+                d: jets[i].d.mul_pow2(k),
+            }
+        });
+        let undo = -e * isobaric_weight(self.q) as i64;
+        let q = self.of(&balanced);
+        let q = Dual {
+            v: q.v.mul_pow2(undo),
+            d: q.d.mul_pow2(undo),
+        };
         (q.v.is_known() && q.d.is_known()).then(|| BallJet {
             value: q.v,
             slope: q.d,
@@ -347,12 +368,18 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(48))]
         /// Each model agrees with the polynomial it stands for: exact signs
         /// and values at points, and enclosures that hold the exact values.
+        /// `tilt` scales the coefficient of `λ^k` by `2^(tilt·k)`: sizes
+        /// apart by up to `2^1000`, which the double-word jet must balance
+        /// (its products would underflow otherwise).
         #[test]
         fn models_agree_with_the_closed_form_polynomials(
             raw in proptest::collection::vec(proptest::collection::vec(-40i64..40, 1..5), 5),
-            a in -64i64..64, j in 0u64..8, b in 1i64..9,
+            a in -64i64..64, j in 0u64..8, b in 1i64..9, tilt in 0u64..250,
         ) {
-            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| poly(&raw[k]));
+            // Coefficient i (high → low) is that of λ^(4 − i).
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+                ZPoly::new(poly(&raw[k]).coeffs().iter().map(|c| c.shl(tilt * (4 - k as u64))).collect())
+            });
             let cp = CharPoly { coeffs: coeffs.clone() };
             let f = Rc::new(Coefficients::new(cp));
             let inv = closed_forms(&coeffs);

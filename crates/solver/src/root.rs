@@ -42,8 +42,9 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
 enum BallRound {
     /// The sign of `q(α)`, proven.
     Sign(i32),
-    /// Neither exact Taylor test decides this round, and `q(m) ≠ 0`.
-    Open,
+    /// Neither exact Taylor test decides this round; `value_nonzero` when
+    /// `q(m) ≠ 0` is proven too (the zero test's trigger in round 0).
+    Open { value_nonzero: bool },
 }
 
 /// What a float Newton jump achieved.
@@ -332,8 +333,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// sup|q″(I)|·r²/2` decides over the balls (then the exact form decides
     /// too, with the same sign: its linear part lies in the balls and its
     /// remainder is no larger), [`BallRound::Open`] when the balls prove
-    /// that neither exact test would decide this round and that `q(m) ≠ 0`,
-    /// `None` when they cannot tell (the exact jet is needed).
+    /// that neither exact test would decide this round (and whether
+    /// `q(m) ≠ 0`), `None` when they cannot tell (the exact jet is needed).
     ///
     /// With `L = q(m) + q′(m)·(I − m)` over `I` (`m ∈ I`, so `I − m ∋ 0`),
     /// `ρ = sup|q″(I)|·r²/2` and `r = max|I − m|`, the exact Taylor test
@@ -384,8 +385,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
             - f64::MIN_POSITIVE)
             .max(0.0);
         let float_open = min_up <= -r_lo && max_dn >= -r_hi;
-        let value_nonzero = jet.value.abs_lower() >= f64::MIN_POSITIVE.sqrt();
-        (taylor_open && float_open && value_nonzero).then_some(BallRound::Open)
+        // 2^(−960): far from where the exact value's f64 enclosure underflows.
+        let value_nonzero = jet.value.abs_lower() >= 1.0 / (1u128 << 120) as f64 / 2f64.powi(840);
+        (taylor_open && float_open).then_some(BallRound::Open { value_nonzero })
     }
 
     /// Shrinks the enclosure until `hi − lo <= max_width` (or the root turns
@@ -529,8 +531,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 .and_then(|jet| self.ball_round(&m, &jet, second));
             let value_zero = match ball {
                 Some(BallRound::Sign(s)) => return s,
-                Some(BallRound::Open) => false,
-                None => {
+                // From round 1 on the zero test runs whatever q(m) is.
+                Some(BallRound::Open { value_nonzero }) if value_nonzero || round >= 1 => false,
+                _ => {
                     let jet = model.exact_jet_at(&m);
                     let (qm, dqm) = jet.enclose();
                     // I − m exactly, then enclosed: an f64 interval around α

@@ -177,6 +177,31 @@ pub fn closed_form<R: RingOps>(coeffs: &[R; 5], q: Quantity) -> Option<R> {
     }
 }
 
+/// The isobaric weight of a closed form: with `f = Σ a_k λ^k`, replacing
+/// `λ` by `s·λ` (`a_k → s^k·a_k`) multiplies `q` by `s^weight`. The exact
+/// path balances the magnitudes of `f`'s coefficients this way (a power of
+/// two `s`, so exactly) before evaluating a closed form in floating point.
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_subres::{closed_form, isobaric_weight, Quantity};
+/// let f = [3, -7, 11, 5, -13].map(Int::from); // a_4 … a_0
+/// let g: [Int; 5] = std::array::from_fn(|i| &f[i] * &Int::from(1 << (4 - i)));
+/// let q = Quantity::Sr10;
+/// let scaled = closed_form(&f, q).unwrap().shl(isobaric_weight(q));
+/// assert_eq!(closed_form(&g, q).unwrap(), scaled);
+/// ```
+pub fn isobaric_weight(q: Quantity) -> u64 {
+    match q {
+        Quantity::Sr22 => 6,
+        Quantity::Sr20 => 4,
+        Quantity::Sr11 => 10,
+        Quantity::Sr10 => 9,
+        Quantity::Sr0 => 12,
+        Quantity::Var => 0,
+    }
+}
+
 /// The scaled coefficients `ā = 12e, b̄ = −3a, c̄ = 2b, d̄ = −3c, ē = 12d`
 /// and the intermediate quantities of the closed forms built from them.
 struct Barred<R> {
@@ -306,6 +331,20 @@ mod tests {
     }
 
     proptest! {
+        /// Isobaric: `λ → s·λ` (`a_k → s^k·a_k`) multiplies each closed
+        /// form by `s^isobaric_weight` (integer coefficients, `s` of either
+        /// sign; the test fails for any other weight).
+        #[test]
+        fn closed_forms_are_isobaric(raw in proptest::collection::vec(-99i64..99, 5), s in -7i64..8) {
+            let f: [Int; 5] = std::array::from_fn(|i| Int::from(raw[i]));
+            let g: [Int; 5] = std::array::from_fn(|i| &f[i] * &Int::from(s).pow(4 - i as u32));
+            let (a, b) = (closed(&f), closed(&g));
+            for q in 0..5 {
+                let w = isobaric_weight(QS[q]) as u32;
+                prop_assert_eq!(&b[q], &(&a[q] * &Int::from(s).pow(w)), "{:?}", QS[q]);
+            }
+        }
+
         /// Test 3, monic: closed form = K · generic determinant.
         #[test]
         fn closed_forms_are_positive_multiples_monic(a in rat(), b in rat(), c in rat(), d in rat()) {
