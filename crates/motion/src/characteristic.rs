@@ -168,6 +168,13 @@ pub fn squarefree_factors(p: &ZPoly) -> Vec<(ZPoly, usize)> {
     if p.degree().unwrap_or(0) == 0 {
         return out;
     }
+    // The usual case first: a squarefree `p` (one gcd modulo a word prime
+    // proves it) is its own factorisation.
+    let s = p.squarefree_part();
+    if s.degree() == p.degree() {
+        out.push((s, 1));
+        return out;
+    }
     let p = p.primitive_part();
     let mut c = p.gcd(&p.derivative());
     let mut w = p.div_exact(&c).expect("gcd divides");

@@ -228,6 +228,58 @@ pub(crate) struct NttPrime {
 
 static PRIMES: Mutex<Vec<NttPrime>> = Mutex::new(Vec::new());
 
+/// The first table primes as [`next_prime`] finds them (checked by a test):
+/// finding them costs some 40k instructions per process (Miller–Rabin on
+/// many candidates), paid by the first gcd or product of a query otherwise.
+const FIRST_PRIMES: [NttPrime; 8] = [
+    NttPrime {
+        p: 4611686018405367809,
+        root: 2736110502881845706,
+    },
+    NttPrime {
+        p: 4611686018326724609,
+        root: 1469899618568417606,
+    },
+    NttPrime {
+        p: 4611686018325676033,
+        root: 1838850007681131305,
+    },
+    NttPrime {
+        p: 4611686018309947393,
+        root: 3073956228989370396,
+    },
+    NttPrime {
+        p: 4611686018287927297,
+        root: 2048369916259585331,
+    },
+    NttPrime {
+        p: 4611686018282684417,
+        root: 2303244773161627848,
+    },
+    NttPrime {
+        p: 4611686018266955777,
+        root: 652118273491792266,
+    },
+    NttPrime {
+        p: 4611686018257518593,
+        root: 641137931516228358,
+    },
+];
+
+/// The table with at least `count` primes.
+fn table(count: usize) -> std::sync::MutexGuard<'static, Vec<NttPrime>> {
+    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
+    if table.is_empty() {
+        table.extend_from_slice(&FIRST_PRIMES);
+    }
+    while table.len() < count {
+        let prev = table.last().map_or(1u64 << 62, |q| q.p);
+        let next = next_prime(prev);
+        table.push(next);
+    }
+    table
+}
+
 /// The next table prime below `p_prev`, found by testing `c·2^20 + 1` for
 /// decreasing `c`.
 fn next_prime(p_prev: u64) -> NttPrime {
@@ -254,27 +306,15 @@ fn next_prime(p_prev: u64) -> NttPrime {
     }
 }
 
-/// The first `count` table primes (descending from `2^62`), generated on
-/// first use and cached for the life of the process.
+/// The first `count` table primes (descending from `2^62`): the known
+/// ones, then generated on first use and cached for the life of the process.
 pub(crate) fn ntt_primes(count: usize) -> Vec<NttPrime> {
-    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
-    while table.len() < count {
-        let prev = table.last().map_or(1u64 << 62, |q| q.p);
-        let next = next_prime(prev);
-        table.push(next);
-    }
-    table[..count].to_vec()
+    table(count)[..count].to_vec()
 }
 
 /// The `i`-th table prime.
 pub(crate) fn ntt_prime(i: usize) -> NttPrime {
-    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
-    while table.len() <= i {
-        let prev = table.last().map_or(1u64 << 62, |q| q.p);
-        let next = next_prime(prev);
-        table.push(next);
-    }
-    table[i]
+    table(i + 1)[i]
 }
 
 #[cfg(test)]
@@ -288,6 +328,16 @@ mod tests {
             && (2..)
                 .take_while(|d| d * d <= n)
                 .all(|d| !n.is_multiple_of(d))
+    }
+
+    #[test]
+    fn first_primes_are_the_generated_ones() {
+        let mut prev = 1u64 << 62;
+        for known in FIRST_PRIMES {
+            let next = next_prime(prev);
+            assert_eq!((next.p, next.root), (known.p, known.root));
+            prev = next.p;
+        }
     }
 
     #[test]
