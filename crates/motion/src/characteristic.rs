@@ -80,15 +80,23 @@ impl CharPoly {
         // Both routes first in i128 (short decimal inputs fit), exactly
         // in ZPoly if a number does not.
         let f = if na.max(nb) <= ma.max(mb) {
-            let (qa, qb) = (a.quadric(), b.quadric());
-            worth_small(&[&qa, &qb], 4)
-                .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
-                .flatten()
-                .unwrap_or_else(|| characteristic(&qa, &qb))
+            // The quadrics themselves in i128 when they fit (they usually
+            // do when f does).
+            let small = a.quadric_small().zip(b.quadric_small());
+            let f = small
+                .filter(|(qa, qb)| worth_small(small_sizes(&[qa, qb]), 4))
+                .and_then(|(qa, qb)| lift(characteristic(&qa, &qb)));
+            f.unwrap_or_else(|| {
+                let (qa, qb) = (a.quadric(), b.quadric());
+                worth_small(sizes(&[&qa, &qb]), 4)
+                    .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
+                    .flatten()
+                    .unwrap_or_else(|| characteristic(&qa, &qb))
+            })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
             let (da, db) = (&a.diagonal, &b.diagonal);
-            worth_small(&[&pa, &pb], 8)
+            worth_small(sizes(&[&pa, &pb]), 8)
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
                     let [dx, dy] = [da, db].map(|d| d.each_ref().map(SmallPoly::lowered));
@@ -136,13 +144,29 @@ fn lowered(m: &Mat4<ZPoly>) -> Mat4<SmallPoly> {
         .map(|row| row.each_ref().map(SmallPoly::lowered))
 }
 
-/// Whether `f` from these matrices, a sum of products of `factors` entries
-/// each, is likely to fit [`SmallPoly`] (degree and size estimates only:
-/// an overflow is detected anyway, this just skips a doomed attempt).
-fn worth_small(mats: &[&Mat4<ZPoly>], factors: usize) -> bool {
-    let entries = || mats.iter().flat_map(|m| m.iter().flatten());
-    let degree = entries().filter_map(ZPoly::degree).max().unwrap_or(0);
-    let bits = entries().map(ZPoly::max_bits).max().unwrap_or(0) as usize;
+/// `(degree, bits)` of every entry of these matrices.
+fn sizes<'a>(mats: &'a [&Mat4<ZPoly>]) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
+    mats.iter()
+        .flat_map(|m| m.iter().flatten())
+        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
+}
+
+/// [`sizes`] of matrices in [`SmallPoly`].
+fn small_sizes<'a>(
+    mats: &'a [&Mat4<SmallPoly>],
+) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
+    mats.iter()
+        .flat_map(|m| m.iter().flatten())
+        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
+}
+
+/// Whether `f` from matrices with entries of these `(degree, bits)`, a
+/// sum of products of `factors` entries each, is likely to fit
+/// [`SmallPoly`] (degree and size estimates only: an overflow is detected
+/// anyway, this just skips a doomed attempt).
+fn worth_small(entries: impl Iterator<Item = (usize, u64)> + Clone, factors: usize) -> bool {
+    let degree = entries.clone().map(|(d, _)| d).max().unwrap_or(0);
+    let bits = entries.map(|(_, b)| b).max().unwrap_or(0) as usize;
     degree * factors <= SmallPoly::MAX_DEGREE && (bits + degree) * factors + 24 <= 126
 }
 

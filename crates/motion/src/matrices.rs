@@ -7,7 +7,7 @@ use crate::curve::{to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat, RingOps};
-use ccd_poly::ZPoly;
+use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, congruence, det3, integral, norm2,
     rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
@@ -259,6 +259,23 @@ impl PlacedQuadric {
     /// entries, up to a factor nonzero on the span.
     pub fn inverse(&self) -> Mat4<ZPoly> {
         primitive_matrix(self.frame.inverse())
+    }
+
+    /// [`PlacedQuadric::quadric`] with `i128` coefficients ([`SmallPoly`]),
+    /// or `None` if a number on the way does not fit: the same matrix (the
+    /// inverse placement made primitive, then `NᵀDN`), without big-integer
+    /// arithmetic.
+    pub fn quadric_small(&self) -> Option<Mat4<SmallPoly>> {
+        let n = self.frame.map(SmallPoly::lowered).inverse();
+        let g = n.iter().flatten().try_fold(0, |g, e| e.gcd_with(g))?;
+        let n = if g > 1 {
+            let g = i64::try_from(g).ok()?;
+            n.map(|row| row.map(|e| e.div_small(g)))
+        } else {
+            n
+        };
+        let q = congruence(&n, &self.diagonal.each_ref().map(SmallPoly::lowered));
+        q.iter().flatten().all(SmallPoly::is_exact).then_some(q)
     }
 
     /// Upper bounds `(deg M, deg N)` on the entries' degrees of
@@ -561,6 +578,11 @@ mod tests {
                 return Err(proptest::test_runner::TestCaseError::reject("degenerate motion"));
             };
             let quadric = placed.quadric();
+            // The i128 route gives the very same matrix when it fits.
+            if let Some(small) = placed.quadric_small() {
+                let lifted = small.map(|row| row.map(|e| e.to_zpoly().unwrap()));
+                proptest::prop_assert_eq!(&lifted, &quadric);
+            }
             for u in [Rat::zero(), Rat::from_frac(1, 3), Rat::from_frac(1, 2), Rat::one()] {
                 let exact = quadric_by_definition(&body, &u);
                 let ours = quadric.each_ref().map(|row| row.each_ref().map(|e| e.eval_rat(&u)));

@@ -18,7 +18,9 @@ use ccd_arith::{Int, RingOps};
 const CAP: usize = 17;
 
 /// A polynomial in `ℤ[t]` with `i128` coefficients (low → high), or the
-/// marker that an exact value did not fit (module docs).
+/// marker that an exact value did not fit (module docs). The slots past
+/// the length are zero (every constructor keeps this), so operations read
+/// them without bounds tests.
 ///
 /// ```
 /// use ccd_arith::RingOps;
@@ -61,7 +63,14 @@ impl SmallPoly {
                 None => return SmallPoly::overflowed(),
             }
         }
-        let len = c[..len].iter().rposition(|&v| v != 0).map_or(0, |i| i + 1);
+        SmallPoly::from_array(c, len)
+    }
+
+    /// The polynomial `c[..len]` (the slots past `len` zero), trimmed.
+    fn from_array(c: [i128; CAP], mut len: usize) -> SmallPoly {
+        while len > 0 && c[len - 1] == 0 {
+            len -= 1;
+        }
         SmallPoly {
             c,
             len,
@@ -93,12 +102,40 @@ impl SmallPoly {
         })
     }
 
-    fn coeff(&self, i: usize) -> i128 {
-        if i < self.len {
-            self.c[i]
-        } else {
-            0
+    /// Whether the value is exact (no operation overflowed).
+    pub fn is_exact(&self) -> bool {
+        !self.overflow
+    }
+
+    /// The degree (`None` for zero or an overflowed value).
+    pub fn degree(&self) -> Option<usize> {
+        (!self.overflow && self.len > 0).then(|| self.len - 1)
+    }
+
+    /// The bit length of the largest coefficient (`0` for zero; `128`
+    /// for an overflowed value, which fits nothing).
+    pub fn max_bits(&self) -> u64 {
+        if self.overflow {
+            return 128;
         }
+        let m = self.c[..self.len]
+            .iter()
+            .map(|v| v.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        u64::from(128 - m.leading_zeros())
+    }
+
+    /// `gcd(g, content)`: the gcd of `g` and the coefficients, `≥ 0` (so
+    /// `gcd_with(0)` is the content, and folding it over several
+    /// polynomials gives their common content); `None` for an overflowed
+    /// value.
+    pub fn gcd_with(&self, g: u128) -> Option<u128> {
+        (!self.overflow).then(|| {
+            self.c[..self.len].iter().fold(g, |g, v| {
+                crate::zpoly::division::gcd_u128(g, v.unsigned_abs())
+            })
+        })
     }
 
     /// Coefficientwise `op`, overflow propagated.
@@ -107,19 +144,32 @@ impl SmallPoly {
             return SmallPoly::overflowed();
         }
         let len = self.len.max(o.len);
-        SmallPoly::build((0..len).map(|i| op(self.coeff(i), o.coeff(i))), len)
+        let mut c = [0; CAP];
+        for (slot, (&x, &y)) in c.iter_mut().zip(self.c.iter().zip(&o.c)).take(len) {
+            match op(x, y) {
+                Some(v) => *slot = v,
+                None => return SmallPoly::overflowed(),
+            }
+        }
+        SmallPoly::from_array(c, len)
     }
 }
 
 impl RingOps for SmallPoly {
     fn zero() -> Self {
-        SmallPoly::build(std::iter::empty(), 0)
+        SmallPoly {
+            c: [0; CAP],
+            len: 0,
+            overflow: false,
+        }
     }
     fn one() -> Self {
         SmallPoly::from_i64(1)
     }
     fn from_i64(v: i64) -> Self {
-        SmallPoly::build(std::iter::once(Some(v as i128)), 1)
+        let mut c = [0; CAP];
+        c[0] = v as i128;
+        SmallPoly::from_array(c, 1)
     }
     fn is_zero(&self) -> bool {
         !self.overflow && self.len == 0
@@ -171,7 +221,7 @@ impl RingOps for SmallPoly {
                 }
             }
         }
-        SmallPoly::build(c.into_iter().map(Some), len)
+        SmallPoly::from_array(c, len)
     }
     fn negated(&self) -> Self {
         self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
