@@ -138,6 +138,63 @@ impl SmallPoly {
         })
     }
 
+    /// The exact quotient in `ℤ[t]`: `Some(q)` with `self = q·d`; `None`
+    /// when `d` does not divide `self` (or `d = 0`); an overflowed `q` when
+    /// either input is overflowed or a step leaves `i128` (then nothing is
+    /// known). Long division from the top, as [`ZPoly::div_exact`]: the
+    /// first inexact quotient coefficient or a nonzero remainder answers
+    /// `None`.
+    ///
+    /// ```
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let s = |c: &[i64]| SmallPoly::from_zpoly(&ZPoly::from_i64s(c)).unwrap();
+    /// // 3t² + 2 by 2t + 1: no.
+    /// assert!(s(&[2, 0, 3]).div_exact(&s(&[1, 2])).is_none());
+    /// // 2t² − t − 1 = (2t + 1)(t − 1).
+    /// let q = s(&[-1, -1, 2]).div_exact(&s(&[1, 2])).unwrap();
+    /// assert_eq!(q.to_zpoly(), Some(ZPoly::from_i64s(&[-1, 1])));
+    /// ```
+    pub fn div_exact(&self, d: &SmallPoly) -> Option<SmallPoly> {
+        if self.overflow || d.overflow {
+            return Some(SmallPoly::overflowed());
+        }
+        let dd = d.len.checked_sub(1)?;
+        if self.len == 0 {
+            return Some(self.clone());
+        }
+        if self.len < d.len {
+            return None;
+        }
+        let dl = d.c[dd];
+        let mut r = self.c;
+        let mut q = [0; CAP];
+        for k in (0..self.len - dd).rev() {
+            let top = r[k + dd];
+            if top == 0 {
+                continue;
+            }
+            let Some(rem) = top.checked_rem(dl) else {
+                return Some(SmallPoly::overflowed());
+            };
+            if rem != 0 {
+                return None;
+            }
+            let qk = top / dl; // exact, and i128::MIN / −1 was caught above
+            for (ri, &di) in r[k..k + dd].iter_mut().zip(&d.c) {
+                match qk.checked_mul(di).and_then(|p| ri.checked_sub(p)) {
+                    Some(v) => *ri = v,
+                    None => return Some(SmallPoly::overflowed()),
+                }
+            }
+            r[k + dd] = 0;
+            q[k] = qk;
+        }
+        if r[..dd].iter().any(|&x| x != 0) {
+            return None;
+        }
+        Some(SmallPoly::from_array(q, self.len - dd))
+    }
+
     /// Coefficientwise `op`, overflow propagated.
     fn zip(&self, o: &SmallPoly, op: impl Fn(i128, i128) -> Option<i128>) -> SmallPoly {
         if self.overflow || o.overflow {
@@ -264,6 +321,23 @@ mod tests {
             check(sa.minus(&sb), &a - &b, small)?;
             check(sa.times(&sb), &a * &b, small)?;
             check(sa.negated(), -&a, small)?;
+            // Exact division: the product by b divides back to a; a + 1
+            // over b divides exactly when ZPoly says so.
+            if !b.is_zero() {
+                if let Some(q) = sa.times(&sb).div_exact(&sb) {
+                    check(q, a.clone(), small)?;
+                } else {
+                    prop_assert!(false, "a·b / b must divide");
+                }
+                let a1 = &a + &ZPoly::one();
+                if let Some(sa1) = SmallPoly::from_zpoly(&a1) {
+                    match (sa1.div_exact(&sb), a1.div_exact(&b)) {
+                        (None, z) => prop_assert!(z.is_none()),
+                        (Some(q), Some(z)) => check(q, z, small)?,
+                        (Some(q), None) => prop_assert!(!q.is_exact()),
+                    }
+                }
+            }
             check(sa.times(&SmallPoly::from_i64(6)).div_small(3), &a * &ZPoly::from_i64s(&[2]), small)?;
         }
     }
