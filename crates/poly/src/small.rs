@@ -96,7 +96,8 @@ impl SmallPoly {
             ZPoly::new(
                 self.c[..self.len]
                     .iter()
-                    .map(|&v| Int::from_i128(v))
+                    // The one-word constructor when it fits: much cheaper.
+                    .map(|&v| i64::try_from(v).map_or_else(|_| Int::from_i128(v), Int::from_i64))
                     .collect(),
             )
         })
