@@ -5,6 +5,30 @@ use crate::kinds::Bezier;
 use ccd_arith::{Int, Rat};
 use ccd_poly::{bernstein_to_power, ZPoly};
 
+/// The lcm of the denominators of `values` (`1` for none), skipping the
+/// usual denominators `1` and those equal to the running lcm.
+pub(crate) fn common_denominator<'a>(values: impl IntoIterator<Item = &'a Rat>) -> Int {
+    values.into_iter().fold(Int::one(), |l, v| {
+        let d = v.denom();
+        if d.is_one() || *d == l {
+            l
+        } else {
+            l.lcm(d)
+        }
+    })
+}
+
+/// `x·den` for a multiple `den` of the denominator of `x`: an integer.
+pub(crate) fn times_denominator(x: &Rat, den: &Int) -> Int {
+    if x.denom() == den {
+        x.numer().clone()
+    } else if x.denom().is_one() {
+        x.numer() * den
+    } else {
+        x.numer() * &den.div_exact(x.denom())
+    }
+}
+
 /// A (rational) Bézier curve of `N`-vectors as integer polynomial
 /// numerators over one integer polynomial denominator: the curve is
 /// `numerators / denominator` exactly, with the denominator a positive
@@ -31,16 +55,8 @@ pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
             .map(|(p, w)| &p[k] * w)
             .collect()
     });
-    let den = values
-        .iter()
-        .flatten()
-        .chain(&weights)
-        .fold(Int::one(), |l, v| l.lcm(v.denom()));
-    let scaled = |v: &[Rat]| -> Vec<Int> {
-        v.iter()
-            .map(|x| x.numer() * &den.div_exact(x.denom()))
-            .collect()
-    };
+    let den = common_denominator(values.iter().flatten().chain(&weights));
+    let scaled = |v: &[Rat]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
     PolyCurve {
         numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),
         denominator: bernstein_to_power(&scaled(&weights)),

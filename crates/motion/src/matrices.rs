@@ -3,7 +3,7 @@
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
 use crate::centred::Centred;
-use crate::curve::{to_poly_curve, PolyCurve};
+use crate::curve::{common_denominator, times_denominator, to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat, RingOps};
@@ -231,8 +231,8 @@ fn primitive_matrix(n: Mat4<ZPoly>) -> Mat4<ZPoly> {
 
 /// `v` times the lcm of its denominators.
 fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
-    let den = v.iter().fold(Int::one(), |l, r| l.lcm(r.denom()));
-    v.each_ref().map(|x| x.numer() * &den.div_exact(x.denom()))
+    let den = common_denominator(v);
+    v.each_ref().map(|x| times_denominator(x, &den))
 }
 
 /// A placed body: its placement, its body quadric and what is known about
