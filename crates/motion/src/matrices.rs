@@ -360,20 +360,26 @@ impl PlacedQuadric {
                 })
             })
         });
-        let g = blocks
-            .iter()
-            .flatten()
-            .cloned()
-            .chain(column)
-            .fold(Int::zero(), |g, v| g.gcd(&v));
+        // The gcd stops at 1 (the column, lazy, is then not even formed).
+        let mut g = Int::zero();
+        for v in blocks.iter().flatten().cloned().chain(column) {
+            if !v.is_zero() {
+                g = g.gcd(&v);
+                if g.is_one() {
+                    break;
+                }
+            }
+        }
         if g.is_zero() {
             return None;
         }
+        let blocks = if g.is_one() {
+            blocks
+        } else {
+            blocks.map(|row| row.map(|e| e.div_exact(&g)))
+        };
         // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
-        let centred = congruence(
-            &blocks.map(|row| row.map(|e| e.div_exact(&g))),
-            &self.diagonal.each_ref().map(|e| e.coeff(0)),
-        );
+        let centred = congruence(&blocks, &self.diagonal.each_ref().map(|e| e.coeff(0)));
         Some(Centred {
             k: std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
             kappa: -&centred[3][3],
