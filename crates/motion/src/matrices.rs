@@ -18,6 +18,9 @@ fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
     if p.is_zero() {
         return Some(span[0].to_f64());
     }
+    if p.degree() == Some(0) {
+        return None; // a nonzero constant (a curve without weights)
+    }
     let mut roots = ccd_solver::isolate(p, &Rat::zero(), &Rat::one()).ok()?;
     let r = roots.next()?;
     let u = r.midpoint();
@@ -235,6 +238,32 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
     v.each_ref().map(|x| times_denominator(x, &den))
 }
 
+/// `body_diagonal(radii)` times the lcm of its entries' denominators, in
+/// integers only. With `rᵢ = nᵢ/dᵢ`, `M = (d₀d₁d₂)²` is a common
+/// denominator of the entries `e`, and `E = M·e` is `body_diagonal` of the
+/// numerators with row `i < 3` times `dᵢ²`:
+/// `[(d₀n₁n₂)², (n₀d₁n₂)², (n₀n₁d₂)², −(n₀n₁n₂)²]`. The integers `t` with
+/// `t·e` integral are the multiples of the lcm `L` of the reduced
+/// denominators, and `L | M`; so `L = M/k` for the largest `k` dividing `M`
+/// and every `Eⱼ`, `k = gcd(M, E)`, and the result `L·e` is `E/k`.
+fn integer_diagonal(radii: &[Rat; 3]) -> [Int; 4] {
+    let e = body_diagonal(&radii.each_ref().map(|r| r.numer().clone()));
+    let [d0, d1, d2] = radii.each_ref().map(Rat::denom);
+    let m = d0 * d1 * d2;
+    let squares = [d0, d1, d2].map(|d| d * d);
+    let scaled: [Int; 4] = std::array::from_fn(|i| match squares.get(i) {
+        Some(s) if !s.is_one() => &e[i] * s,
+        _ => e[i].clone(),
+    });
+    let k = scaled
+        .iter()
+        .fold(&m * &m, |g, x| if g.is_one() { g } else { g.gcd(x) });
+    if k.is_one() {
+        return scaled;
+    }
+    scaled.map(|x| x.div_exact(&k))
+}
+
 /// A placed body: its placement, its body quadric and what is known about
 /// the determinant of the placement. The integer matrices are formed only
 /// when asked for (each route to `f` needs one of them).
@@ -408,7 +437,7 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
         .collect();
     Ok(PlacedQuadric {
         frame,
-        diagonal: rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant),
+        diagonal: integer_diagonal(&body.radii).map(ZPoly::constant),
         det_factors,
     })
 }
@@ -602,6 +631,18 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    proptest::proptest! {
+        /// The integer body diagonal is `body_diagonal` over ℚ times the
+        /// lcm of its denominators.
+        #[test]
+        fn integer_diagonal_matches_the_rational_one(
+            radii in proptest::collection::vec((1i64..60, 1i64..60), 3),
+        ) {
+            let r: [Rat; 3] = std::array::from_fn(|i| Rat::from_frac(radii[i].0, radii[i].1));
+            proptest::prop_assert_eq!(integer_diagonal(&r), rat_vec_to_int(&body_diagonal(&r)));
         }
     }
 
