@@ -45,15 +45,13 @@ pub struct PolyCurve<const N: usize> {
 /// `Σ Bᵢⁿ(u)·(L·wᵢ·Pᵢ[k])` and the denominator `Σ Bᵢⁿ(u)·(L·wᵢ)`, both in
 /// ℤ[u] ([`bernstein_to_power`]: additions only, no rational arithmetic).
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
-    let weight = |i: usize| curve.weights.as_ref().map_or(Rat::one(), |w| w[i].clone());
-    let weights: Vec<Rat> = (0..curve.points.len()).map(weight).collect();
-    let values: [Vec<Rat>; N] = std::array::from_fn(|k| {
-        curve
-            .points
-            .iter()
-            .zip(&weights)
-            .map(|(p, w)| &p[k] * w)
-            .collect()
+    let weights: Vec<Rat> = match &curve.weights {
+        Some(w) => w.clone(),
+        None => vec![Rat::one(); curve.points.len()],
+    };
+    let values: [Vec<Rat>; N] = std::array::from_fn(|k| match &curve.weights {
+        Some(w) => curve.points.iter().zip(w).map(|(p, w)| &p[k] * w).collect(),
+        None => curve.points.iter().map(|p| p[k].clone()).collect(),
     });
     let den = common_denominator(values.iter().flatten().chain(&weights));
     let scaled = |v: &[Rat]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
