@@ -116,11 +116,9 @@ impl Frame<ZPoly> {
 /// determinant (the weight curve, and `|q|²` or `det L`): the only factors
 /// `det A` can have.
 fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>), MotionError> {
-    let rigid = |q: &[ZPoly; 4], center: [ZPoly; 3], w: ZPoly| Frame::Rigid {
-        m: rotation_numerator(q),
-        n: norm2(q),
-        center,
-        w,
+    let rigid = |q: &[ZPoly; 4], center: [ZPoly; 3], w: ZPoly| {
+        let (m, n) = rotation(q);
+        Frame::Rigid { m, n, center, w }
     };
     // A constant orientation: the rotation of the integer quaternion `L·q`
     // over ℤ, then as constants (no polynomial or rational arithmetic).
@@ -204,6 +202,26 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
             Ok((Frame::Affine { l, d, w }, factors))
         }
         Motion::Helical { .. } => Err(MotionError::NotRational { kind: "helical" }),
+    }
+}
+
+/// `(M(q), |q|²)` of a quaternion curve: in i128 ([`SmallPoly`], lifted
+/// back) when the numbers fit, else over [`ZPoly`]; the same polynomials.
+fn rotation(q: &[ZPoly; 4]) -> (Mat3<ZPoly>, ZPoly) {
+    let small = q.each_ref().map(SmallPoly::lowered);
+    let m: Option<Vec<ZPoly>> = rotation_numerator(&small)
+        .iter()
+        .flatten()
+        .map(SmallPoly::to_zpoly)
+        .collect();
+    match (m, norm2(&small).to_zpoly()) {
+        (Some(m), Some(n)) => {
+            let mut m = m.into_iter();
+            let m =
+                std::array::from_fn(|_| std::array::from_fn(|_| m.next().expect("nine entries")));
+            (m, n)
+        }
+        _ => (rotation_numerator(q), norm2(q)),
     }
 }
 
@@ -635,6 +653,20 @@ mod tests {
     }
 
     proptest::proptest! {
+        /// The i128 rotation is the ZPoly one, and a quaternion too long
+        /// for i128 takes the ZPoly route.
+        #[test]
+        fn rotation_in_i128_is_exact(
+            q in proptest::collection::vec(proptest::collection::vec(-1000i64..1000, 1..4), 4),
+            big in 0u32..3,
+        ) {
+            let scale = Int::from(7).pow(30 * big);
+            let q: [ZPoly; 4] = std::array::from_fn(|i| ZPoly::from_i64s(&q[i]).mul_int(&scale));
+            let (m, n) = rotation(&q);
+            proptest::prop_assert_eq!(m, rotation_numerator(&q));
+            proptest::prop_assert_eq!(n, norm2(&q));
+        }
+
         /// The integer body diagonal is `body_diagonal` over ℚ times the
         /// lcm of its denominators.
         #[test]
