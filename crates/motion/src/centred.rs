@@ -56,36 +56,62 @@ fn trace_product(m: &Mat3<Int>, x: &Mat3<Int>) -> Int {
     s
 }
 
-/// `vᵀ·m·v` for a symmetric constant `m`, from the products `vv[i][j] = v_i·v_j` (`i ≤ j`).
-fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
-    let mut s = ZPoly::zero();
-    for i in 0..3 {
-        for j in i..3 {
-            let c = if i == j {
-                m[i][i].clone()
-            } else {
-                m[i][j].mul_i64(2)
-            };
-            if !c.is_zero() {
-                s = &s + &vv[i][j].mul_int(&c);
-            }
+/// `Σ cᵢ·pᵢ` for integers `cᵢ` and polynomials `pᵢ`, accumulated in one
+/// coefficient vector (no intermediate polynomials).
+fn combination<'a>(terms: impl IntoIterator<Item = (&'a Int, &'a ZPoly)>) -> ZPoly {
+    let mut acc: Vec<Int> = Vec::new();
+    for (c, p) in terms {
+        if c.is_zero() {
+            continue;
+        }
+        if acc.len() < p.coeffs().len() {
+            acc.resize(p.coeffs().len(), Int::zero());
+        }
+        for (a, x) in acc.iter_mut().zip(p.coeffs()) {
+            a.add_mul(c, x);
         }
     }
-    s
+    ZPoly::new(acc)
+}
+
+/// `vᵀ·m·v` for a symmetric constant `m`, from the products `vv[i][j] = v_i·v_j` (`i ≤ j`).
+fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
+    let doubled: Mat3<Int> = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if i < j {
+                m[i][j].mul_i64(2)
+            } else {
+                Int::zero()
+            }
+        })
+    });
+    combination((0..3).flat_map(|i| {
+        let (m, doubled) = (&m, &doubled);
+        (i..3).map(move |j| {
+            let c = if i == j { &m[i][i] } else { &doubled[i][j] };
+            (c, &vv[i][j])
+        })
+    }))
 }
 
 /// `det(λA + B)` (high → low in λ) times a positive constant, for two
 /// bodies that do not turn (module docs).
+///
+/// The outer coefficients are constants: with `b = K_B·e`,
+/// `bᵀ·adj K_B·b = det K_B·eᵀK_B·e` (`K·adj K·K = det K·K`), so
+/// `c_0 = det K_B·s₀ − bᵀ·adj K_B·b = −δ²κ_B·det K_B` and
+/// `c_4 = −δ²κ_A·det K_A` (the determinants of the two constant quadrics).
 pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
     // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B
     // (only δ² enters).
+    let minus_wb = -&b.denominator;
     let e: [ZPoly; 3] = std::array::from_fn(|i| {
-        &b.centre[i].mul_int(&a.denominator) - &a.centre[i].mul_int(&b.denominator)
+        combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
     });
     let delta = &a.denominator * &b.denominator;
     // b = K_B·e and the products b_i·b_j.
     let kb_e: [ZPoly; 3] =
-        std::array::from_fn(|i| (0..3).fold(ZPoly::zero(), |s, j| &s + &e[j].mul_int(&b.k[i][j])));
+        std::array::from_fn(|i| combination((0..3).map(|j| (&b.k[i][j], &e[j]))));
     let bb: [[ZPoly; 3]; 3] = std::array::from_fn(|i| {
         std::array::from_fn(|j| {
             if i <= j {
@@ -112,25 +138,25 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
         trace_product(&adj_a, &b.k),
         det3(&a.k),
     ];
-    // bᵀ·adj P·b, low → high in λ.
-    let q = [&adj_b, &mixed, &adj_a].map(|m| quadratic_form(m, &bb));
+    // bᵀ·adj P·b, low → high in λ (the constant term is not needed: c_0).
+    let q = [&mixed, &adj_a].map(|m| quadratic_form(m, &bb));
     let da = &delta2 * &a.kappa;
-    // c_k = p_k·s₀ − δ²κ_A·p_(k−1) − q_k.
+    let minus_one = Int::from(-1);
+    // c_k = p_k·s₀ − δ²κ_A·p_(k−1) − q_k for k = 1, 2, 3.
     let c = |k: usize| -> ZPoly {
-        let mut ck = if k < 4 {
-            s0.mul_int(&p[k])
-        } else {
-            ZPoly::zero()
+        let ck = match q.get(k - 1) {
+            Some(qk) => combination([(&p[k], &s0), (&minus_one, qk)]),
+            None => s0.mul_int(&p[k]),
         };
-        if k > 0 {
-            ck = &ck - &ZPoly::constant(&da * &p[k - 1]);
-        }
-        if k < 3 {
-            ck = &ck - &q[k];
-        }
-        ck
+        &ck - &ZPoly::constant(&da * &p[k - 1])
     };
-    [c(4), c(3), c(2), c(1), c(0)]
+    [
+        ZPoly::constant(-&(&da * &p[3])),
+        c(3),
+        c(2),
+        c(1),
+        ZPoly::constant(-&(&(&delta2 * &b.kappa) * &p[0])),
+    ]
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ use crate::centred::centred_characteristic;
 use crate::error::MotionError;
 use crate::kinds::Body;
 use crate::matrices::{placed_quadric, PlacedQuadric};
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Rat, RingOps};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
@@ -80,15 +80,23 @@ impl CharPoly {
         // Both routes first in i128 (short decimal inputs fit), exactly
         // in ZPoly if a number does not.
         let f = if na.max(nb) <= ma.max(mb) {
-            let (qa, qb) = (a.quadric(), b.quadric());
-            worth_small(&[&qa, &qb], 4)
-                .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
-                .flatten()
-                .unwrap_or_else(|| characteristic(&qa, &qb))
+            // The quadrics themselves in i128 when they fit (they usually
+            // do when f does).
+            let small = a.quadric_small().zip(b.quadric_small());
+            let f = small
+                .filter(|(qa, qb)| worth_small(small_sizes(&[qa, qb]), 4))
+                .and_then(|(qa, qb)| lift(characteristic(&qa, &qb)));
+            f.unwrap_or_else(|| {
+                let (qa, qb) = (a.quadric(), b.quadric());
+                worth_small(sizes(&[&qa, &qb]), 4)
+                    .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
+                    .flatten()
+                    .unwrap_or_else(|| characteristic(&qa, &qb))
+            })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
             let (da, db) = (&a.diagonal, &b.diagonal);
-            worth_small(&[&pa, &pb], 8)
+            worth_small(sizes(&[&pa, &pb]), 8)
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
                     let [dx, dy] = [da, db].map(|d| d.each_ref().map(SmallPoly::lowered));
@@ -136,13 +144,29 @@ fn lowered(m: &Mat4<ZPoly>) -> Mat4<SmallPoly> {
         .map(|row| row.each_ref().map(SmallPoly::lowered))
 }
 
-/// Whether `f` from these matrices, a sum of products of `factors` entries
-/// each, is likely to fit [`SmallPoly`] (degree and size estimates only:
-/// an overflow is detected anyway, this just skips a doomed attempt).
-fn worth_small(mats: &[&Mat4<ZPoly>], factors: usize) -> bool {
-    let entries = || mats.iter().flat_map(|m| m.iter().flatten());
-    let degree = entries().filter_map(ZPoly::degree).max().unwrap_or(0);
-    let bits = entries().map(ZPoly::max_bits).max().unwrap_or(0) as usize;
+/// `(degree, bits)` of every entry of these matrices.
+fn sizes<'a>(mats: &'a [&Mat4<ZPoly>]) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
+    mats.iter()
+        .flat_map(|m| m.iter().flatten())
+        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
+}
+
+/// [`sizes`] of matrices in [`SmallPoly`].
+fn small_sizes<'a>(
+    mats: &'a [&Mat4<SmallPoly>],
+) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
+    mats.iter()
+        .flat_map(|m| m.iter().flatten())
+        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
+}
+
+/// Whether `f` from matrices with entries of these `(degree, bits)`, a
+/// sum of products of `factors` entries each, is likely to fit
+/// [`SmallPoly`] (degree and size estimates only: an overflow is detected
+/// anyway, this just skips a doomed attempt).
+fn worth_small(entries: impl Iterator<Item = (usize, u64)> + Clone, factors: usize) -> bool {
+    let degree = entries.clone().map(|(d, _)| d).max().unwrap_or(0);
+    let bits = entries.map(|(_, b)| b).max().unwrap_or(0) as usize;
     degree * factors <= SmallPoly::MAX_DEGREE && (bits + degree) * factors + 24 <= 126
 }
 
@@ -166,6 +190,13 @@ pub fn char_poly(a: &Body, b: &Body, span: &[Rat; 2]) -> Result<CharPoly, Motion
 pub fn squarefree_factors(p: &ZPoly) -> Vec<(ZPoly, usize)> {
     let mut out = Vec::new();
     if p.degree().unwrap_or(0) == 0 {
+        return out;
+    }
+    // The usual case first: a squarefree `p` (one gcd modulo a word prime
+    // proves it) is its own factorisation.
+    let s = p.squarefree_part();
+    if s.degree() == p.degree() {
+        out.push((s, 1));
         return out;
     }
     let p = p.primitive_part();
@@ -216,15 +247,49 @@ fn coprime_basis(mut items: Vec<ZPoly>) -> Vec<ZPoly> {
     items
 }
 
-/// How often `pi` divides `p` (`p ≠ 0`), and the cofactor.
-fn multiplicity(p: &ZPoly, pi: &ZPoly) -> (usize, ZPoly) {
+/// Exact division in `ℤ[u]`, for the normalisation's two polynomial types
+/// (exact [`ZPoly`], and [`SmallPoly`] whose steps may overflow).
+trait ExactDivision: RingOps {
+    /// `Some(Some(q))` if `self = q·d`, `Some(None)` if `d` does not
+    /// divide `self`, `None` if this type cannot tell (an overflow).
+    fn quotient(&self, d: &Self) -> Option<Option<Self>>;
+}
+
+impl ExactDivision for ZPoly {
+    fn quotient(&self, d: &Self) -> Option<Option<Self>> {
+        Some(self.div_exact(d))
+    }
+}
+
+impl ExactDivision for SmallPoly {
+    fn quotient(&self, d: &Self) -> Option<Option<Self>> {
+        match self.div_exact(d) {
+            None => Some(None),
+            Some(q) => q.is_exact().then_some(Some(q)),
+        }
+    }
+}
+
+/// How often `pi` divides `p` (`p ≠ 0`); `None` on an overflow.
+fn multiplicity<P: ExactDivision>(p: &P, pi: &P) -> Option<usize> {
     let mut q = p.clone();
     let mut v = 0;
-    while let Some(next) = q.div_exact(pi) {
+    while let Some(next) = q.quotient(pi)? {
         q = next;
         v += 1;
     }
-    (v, q)
+    Some(v)
+}
+
+/// `c·π^e`, where `π^(−e)` divides `c` if `e < 0`; `None` on an overflow
+/// (a [`SmallPoly`] result must still be checked with `to_zpoly`).
+fn times_power<P: ExactDivision>(c: &P, pi: &P, e: i64) -> Option<P> {
+    let power = (0..e.unsigned_abs()).fold(P::one(), |p, _| p.times(pi));
+    if e >= 0 {
+        Some(c.times(&power))
+    } else {
+        c.quotient(&power)?
+    }
 }
 
 /// The exponents `α + β·k` (k = 0..4, low → high) minimising `α + 2β`
@@ -275,25 +340,34 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
         } else {
             pi
         };
-        let mut v: [Option<usize>; 5] = [None; 5];
-        let mut cof: [ZPoly; 5] = std::array::from_fn(|_| ZPoly::zero());
-        for k in 0..5 {
-            if !c[k].is_zero() {
-                let (m, q) = multiplicity(&c[k], &pi);
-                v[k] = Some(m);
-                cof[k] = q;
-            }
-        }
+        // Each step in i128 when the numbers fit, else in ZPoly.
+        let small_pi = SmallPoly::from_zpoly(&pi);
+        let small: [Option<(SmallPoly, &SmallPoly)>; 5] = std::array::from_fn(|k| {
+            small_pi
+                .as_ref()
+                .and_then(|pi| Some((SmallPoly::from_zpoly(&c[k])?, pi)))
+        });
+        let v: [Option<usize>; 5] = std::array::from_fn(|k| {
+            (!c[k].is_zero()).then(|| {
+                small[k]
+                    .as_ref()
+                    .and_then(|(ck, pi)| multiplicity(ck, *pi))
+                    .or_else(|| multiplicity(&c[k], &pi))
+                    .expect("ZPoly division is exact")
+            })
+        });
         let degs: [usize; 5] = std::array::from_fn(|k| c[k].degree().unwrap_or(0));
         let e = best_exponents(&v, &degs, pi.degree().unwrap_or(0));
         for k in 0..5 {
-            if let Some(vk) = v[k] {
-                let total = vk as i64 + e[k];
-                if total == vk as i64 {
-                    continue; // c_k unchanged (the cofactor times π^v_k)
-                }
-                c[k] = &cof[k] * &pi.pow(total as u32);
+            // c_k·π^e_k, a polynomial since e_k >= −v_k.
+            if v[k].is_none() || e[k] == 0 {
+                continue;
             }
+            c[k] = small[k]
+                .as_ref()
+                .and_then(|(ck, pi)| times_power(ck, *pi, e[k])?.to_zpoly())
+                .or_else(|| times_power(&c[k], &pi, e[k]))
+                .expect("π^v_k divides c_k");
         }
     }
     // The common integer content (a positive constant).
@@ -424,6 +498,31 @@ mod tests {
         let pow = |x: &Rat, e: usize| (0..e).fold(Rat::one(), |acc, _| &acc * x);
         r.iter().all(|x| x.signum() > 0)
             && (0..5).all(|k| pow(&r[k], 4) == &pow(&r[0], 4 - k) * &pow(&r[4], k))
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// The normalisation in i128 (small numbers) and in ZPoly (the same
+        /// `f` times a huge positive constant, which the content removal
+        /// takes out) agree: `c_k = g_k·s^(4−k)·p^m` with `s`, `p` positive.
+        #[test]
+        fn small_and_big_normalisations_agree(
+            g in proptest::collection::vec(proptest::collection::vec(-6i64..7, 1..4), 5),
+            a in 1i64..6,
+            b in -3i64..4,
+            m in 0u32..3,
+        ) {
+            proptest::prop_assume!(g[0].iter().any(|&x| x != 0) && g[4].iter().any(|&x| x != 0));
+            let s = ZPoly::from_i64s(&[a, 0, 1]); // u² + a
+            let p = ZPoly::from_i64s(&[b * b + 1, 2 * b, 1]); // (u + b)² + 1
+            let f: [ZPoly; 5] = std::array::from_fn(|i| {
+                &(&ZPoly::from_i64s(&g[i]) * &s.pow((4 - i) as u32)) * &p.pow(m)
+            });
+            let huge = Int::from(3).pow(90);
+            let big: [ZPoly; 5] = f.each_ref().map(|c| c.mul_int(&huge));
+            proptest::prop_assert!(big.iter().all(|c| SmallPoly::from_zpoly(c).is_none() || c.is_zero()));
+            proptest::prop_assert_eq!(normalise(f), normalise(big));
+        }
     }
 
     #[test]

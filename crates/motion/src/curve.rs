@@ -1,51 +1,63 @@
-//! Bézier curves over the span, in the power basis of `u ∈ [0, 1]`.
+//! Bézier curves over the span, in the power basis of `u ∈ [0, 1]`, with
+//! integer coefficients.
 
 use crate::kinds::Bezier;
 use ccd_arith::{Int, Rat};
-use ccd_poly::{Bernstein, QPoly};
+use ccd_poly::{bernstein_to_power, ZPoly};
 
-/// `Σ Bᵢⁿ(u)·vᵢ` in the power basis: [`Bernstein::to_power`] on the
-/// integer vector of the values over their common denominator (additions
-/// only, no rational arithmetic).
-fn bernstein_to_power(values: &[Rat]) -> QPoly {
-    let den = values.iter().fold(Int::one(), |l, v| l.lcm(v.denom()));
-    let ints = values
-        .iter()
-        .map(|v| v.numer() * &den.div_exact(v.denom()))
-        .collect();
-    let scale = Rat::new(Int::one(), den).expect("lcm of positive denominators is positive");
-    Bernstein::from_parts(Rat::zero(), Rat::one(), scale, ints).to_power()
+/// The lcm of the denominators of `values` (`1` for none), skipping the
+/// usual denominators `1` and those equal to the running lcm.
+pub(crate) fn common_denominator<'a>(values: impl IntoIterator<Item = &'a Rat>) -> Int {
+    values.into_iter().fold(Int::one(), |l, v| {
+        let d = v.denom();
+        if d.is_one() || *d == l {
+            l
+        } else {
+            l.lcm(d)
+        }
+    })
 }
 
-/// A (rational) Bézier curve of `N`-vectors as polynomial numerators and
-/// one common denominator: the curve is `numerators / denominator`, the
-/// denominator `Σ Bᵢⁿ(u)·wᵢ` (1 without weights).
+/// `x·den` for a multiple `den` of the denominator of `x`: an integer.
+pub(crate) fn times_denominator(x: &Rat, den: &Int) -> Int {
+    if x.denom() == den {
+        x.numer().clone()
+    } else if x.denom().is_one() {
+        x.numer() * den
+    } else {
+        x.numer() * &den.div_exact(x.denom())
+    }
+}
+
+/// A (rational) Bézier curve of `N`-vectors as integer polynomial
+/// numerators over one integer polynomial denominator: the curve is
+/// `numerators / denominator` exactly, with the denominator a positive
+/// multiple of the weight curve `Σ Bᵢⁿ(u)·wᵢ` (of `1` without weights).
 pub struct PolyCurve<const N: usize> {
     /// One numerator polynomial per coordinate.
-    pub numerators: [QPoly; N],
-    /// The weight curve.
-    pub denominator: QPoly,
+    pub numerators: [ZPoly; N],
+    /// The (scaled) weight curve, positive on the span.
+    pub denominator: ZPoly,
 }
 
-/// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`).
+/// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`): with `L`
+/// the lcm of the denominators of every `wᵢ·Pᵢ` and `wᵢ`, numerator `k` is
+/// `Σ Bᵢⁿ(u)·(L·wᵢ·Pᵢ[k])` and the denominator `Σ Bᵢⁿ(u)·(L·wᵢ)`, both in
+/// ℤ[u] ([`bernstein_to_power`]: additions only, no rational arithmetic).
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
-    let weight = |i: usize| curve.weights.as_ref().map_or(Rat::one(), |w| w[i].clone());
-    let numerators = std::array::from_fn(|k| {
-        let vals: Vec<Rat> = curve
-            .points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| &p[k] * &weight(i))
-            .collect();
-        bernstein_to_power(&vals)
-    });
-    let denominator = match &curve.weights {
-        Some(w) => bernstein_to_power(w),
-        None => QPoly::one(),
+    let weights: Vec<Rat> = match &curve.weights {
+        Some(w) => w.clone(),
+        None => vec![Rat::one(); curve.points.len()],
     };
+    let values: [Vec<Rat>; N] = std::array::from_fn(|k| match &curve.weights {
+        Some(w) => curve.points.iter().zip(w).map(|(p, w)| &p[k] * w).collect(),
+        None => curve.points.iter().map(|p| p[k].clone()).collect(),
+    });
+    let den = common_denominator(values.iter().flatten().chain(&weights));
+    let scaled = |v: &[Rat]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
     PolyCurve {
-        numerators,
-        denominator,
+        numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),
+        denominator: bernstein_to_power(&scaled(&weights)),
     }
 }
 
@@ -55,12 +67,29 @@ mod tests {
 
     #[test]
     fn power_form_interpolates_the_ends_and_midpoint() {
-        let v = [Rat::from(11), Rat::from(-1)];
-        let p = bernstein_to_power(&v);
-        assert_eq!(p.eval_rat(&Rat::zero()), Rat::from(11));
-        assert_eq!(p.eval_rat(&Rat::one()), Rat::from(-1));
-        // Quadratic: B(1/2) = (v0 + 2 v1 + v2)/4.
-        let q = bernstein_to_power(&[Rat::from(1), Rat::from(5), Rat::from(-3)]);
-        assert_eq!(q.eval_rat(&Rat::from_frac(1, 2)), Rat::from(2));
+        let curve = Bezier {
+            points: vec![
+                [Rat::from(11), Rat::from_frac(1, 3)],
+                [Rat::from(-1), Rat::from(2)],
+            ],
+            weights: None,
+        };
+        let c = to_poly_curve(&curve);
+        let at = |u: Rat| {
+            let w = c.denominator.eval_rat(&u);
+            c.numerators.each_ref().map(|n| &n.eval_rat(&u) / &w)
+        };
+        assert_eq!(at(Rat::zero()), [Rat::from(11), Rat::from_frac(1, 3)]);
+        assert_eq!(at(Rat::one()), [Rat::from(-1), Rat::from(2)]);
+        // Quadratic with weights (1, 2, 1): B(1/2) = Σ Bᵢ wᵢ Pᵢ / Σ Bᵢ wᵢ.
+        let curve = Bezier {
+            points: vec![[Rat::from(1)], [Rat::from(5)], [Rat::from_frac(-3, 2)]],
+            weights: Some(vec![Rat::one(), Rat::from(2), Rat::one()]),
+        };
+        let c = to_poly_curve(&curve);
+        let half = Rat::from_frac(1, 2);
+        let value = &c.numerators[0].eval_rat(&half) / &c.denominator.eval_rat(&half);
+        // (1/4 + 1/2·2·5 − 1/4·3/2) / (1/4 + 1/2·2 + 1/4) = (39/8) / (3/2).
+        assert_eq!(value, Rat::from_frac(13, 4));
     }
 }

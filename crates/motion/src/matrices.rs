@@ -3,24 +3,23 @@
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
 use crate::centred::Centred;
-use crate::curve::{to_poly_curve, PolyCurve};
+use crate::curve::{common_denominator, times_denominator, to_poly_curve, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat};
 use ccd_arith::{Int, Rat, RingOps};
-use ccd_poly::{QPoly, ZPoly};
+use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, congruence, det3, integral, norm2,
     rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
 };
 
-fn constant_vec<const N: usize>(v: &[Rat; N]) -> [QPoly; N] {
-    std::array::from_fn(|i| QPoly::constant(v[i].clone()))
-}
-
 /// The first root of `p` in `[0, 1]`, mapped to `t` (approximately), if any.
 fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
     if p.is_zero() {
         return Some(span[0].to_f64());
+    }
+    if p.degree() == Some(0) {
+        return None; // a nonzero constant (a curve without weights)
     }
     let mut roots = ccd_solver::isolate(p, &Rat::zero(), &Rat::one()).ok()?;
     let r = roots.next()?;
@@ -29,8 +28,18 @@ fn first_root_in_span(p: &ZPoly, span: &[Rat; 2]) -> Option<f64> {
 }
 
 /// A rational placement `X = R·Xbody + C/w` (rigid, `R = M/n`) or
-/// `X = (L·Xbody + d)/w` (affine), with entries in ℚ[u] (or their values at
+/// `X = (L·Xbody + d)/w` (affine), with entries in ℤ[u] (or their values at
 /// one `u`).
+///
+/// # Integer frames
+///
+/// The matrices a frame gives are only ever used up to a positive factor
+/// (made primitive, [`primitive_matrix`]), and scaling `(M, n)` by one
+/// positive constant and `(C, w)` by another (rigid), or `(L, d, w)` by one
+/// (affine), scales [`Frame::forward`] and [`Frame::inverse`] by a positive
+/// constant. So a motion's rational data is brought to integers once, by
+/// such scalings (a quaternion `q` by the lcm `L` of its denominators gives
+/// `M(Lq) = L²·M(q)`, `|Lq|² = L²·|q|²`), and everything after runs in ℤ[u].
 #[derive(Clone, Debug, PartialEq)]
 enum Frame<P> {
     Rigid {
@@ -82,13 +91,13 @@ impl<P: RingOps> Frame<P> {
     }
 }
 
-impl Frame<QPoly> {
+impl Frame<ZPoly> {
     /// Degree bounds `(forward, inverse)` of the matrices above, from the
     /// entries' degrees (no products formed).
     fn degree_bounds(&self) -> (usize, usize) {
-        let deg = |p: &QPoly| p.degree().unwrap_or(0);
-        let max3 = |m: &Mat3<QPoly>| m.iter().flatten().map(deg).max().unwrap_or(0);
-        let maxv = |v: &[QPoly; 3]| v.iter().map(deg).max().unwrap_or(0);
+        let deg = |p: &ZPoly| p.degree().unwrap_or(0);
+        let max3 = |m: &Mat3<ZPoly>| m.iter().flatten().map(deg).max().unwrap_or(0);
+        let maxv = |v: &[ZPoly; 3]| v.iter().map(deg).max().unwrap_or(0);
         match self {
             Frame::Rigid { m, n, center, w } => {
                 let (m, n, c, w) = (max3(m), deg(n), maxv(center), deg(w));
@@ -102,23 +111,25 @@ impl Frame<QPoly> {
     }
 }
 
-/// The placement of a body over ℚ[u], validated exactly on the span, and
-/// the polynomials whose powers make up its determinant (the weight curve,
-/// and `|q|²` or `det L`): the only factors `det A` can have.
-fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>), MotionError> {
-    let rigid = |q: &[QPoly; 4], center: [QPoly; 3], w: QPoly| Frame::Rigid {
-        m: rotation_numerator(q),
-        n: norm2(q),
-        center,
-        w,
+/// The placement of a body as an integer frame (see [`Frame`]), validated
+/// exactly on the span, and the polynomials whose powers make up its
+/// determinant (the weight curve, and `|q|²` or `det L`): the only factors
+/// `det A` can have.
+fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>), MotionError> {
+    let rigid = |q: &[ZPoly; 4], center: [ZPoly; 3], w: ZPoly| {
+        let (m, n) = rotation(q);
+        Frame::Rigid { m, n, center, w }
     };
-    // A constant orientation: the rotation over ℚ, then as constants (the
-    // same entries, without polynomial arithmetic).
-    let fixed = |q: &Quat, center: [QPoly; 3], w: QPoly| Frame::Rigid {
-        m: rotation_numerator(q).map(|row| row.map(QPoly::constant)),
-        n: QPoly::constant(norm2(q)),
-        center,
-        w,
+    // A constant orientation: the rotation of the integer quaternion `L·q`
+    // over ℤ, then as constants (no polynomial or rational arithmetic).
+    let fixed = |q: &Quat, center: [ZPoly; 3], w: ZPoly| {
+        let q = rat_vec_to_int(q);
+        Frame::Rigid {
+            m: rotation_numerator(&q).map(|row| row.map(ZPoly::constant)),
+            n: ZPoly::constant(norm2(&q)),
+            center,
+            w,
+        }
     };
     for (points, weights) in motion.curve_shapes() {
         if points == 0 || weights.is_some_and(|w| w != points) {
@@ -128,7 +139,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
             });
         }
     }
-    let check_weight = |w: &QPoly| match first_root_in_span(w.prim(), span) {
+    let check_weight = |w: &ZPoly| match first_root_in_span(&w.primitive_part(), span) {
         Some(at) => Err(MotionError::WeightVanishes { at }),
         None => Ok(()),
     };
@@ -136,10 +147,17 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
         Motion::Static {
             center,
             orientation,
-        } => Ok((
-            fixed(orientation, constant_vec(center), QPoly::one()),
-            vec![],
-        )),
+        } => {
+            // (C, 1) times the lcm of the denominators.
+            let [x, y, z, w] = rat_vec_to_int(&[
+                center[0].clone(),
+                center[1].clone(),
+                center[2].clone(),
+                Rat::one(),
+            ])
+            .map(ZPoly::constant);
+            Ok((fixed(orientation, [x, y, z], w), vec![]))
+        }
         Motion::Translation {
             center,
             orientation,
@@ -154,8 +172,8 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
             center,
         } => {
             let q = quaternion_curve(orientation);
-            let common = q.iter().fold(ZPoly::zero(), |g, c| g.gcd(c.prim()));
-            if common.degree().unwrap_or(0) >= 1 || q.iter().all(QPoly::is_zero) {
+            let common = q.iter().fold(ZPoly::zero(), |g, c| g.gcd(c));
+            if common.degree().unwrap_or(0) >= 1 || q.iter().all(ZPoly::is_zero) {
                 if let Some(at) = first_root_in_span(&common, span) {
                     return Err(MotionError::QuaternionVanishes { at });
                 }
@@ -173,11 +191,11 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
                 denominator: w,
             } = to_poly_curve(&curve);
             let poly = |r: usize, k: usize| entries[4 * r + k].clone();
-            let l: Mat3<QPoly> = std::array::from_fn(|r| std::array::from_fn(|k| poly(r, k)));
-            let d: [QPoly; 3] = std::array::from_fn(|r| poly(r, 3));
+            let l: Mat3<ZPoly> = std::array::from_fn(|r| std::array::from_fn(|k| poly(r, k)));
+            let d: [ZPoly; 3] = std::array::from_fn(|r| poly(r, 3));
             check_weight(&w)?;
             let det_l = det3(&l);
-            if let Some(at) = first_root_in_span(det_l.prim(), span) {
+            if let Some(at) = first_root_in_span(&det_l.primitive_part(), span) {
                 return Err(MotionError::SingularAffine { at });
             }
             let factors = vec![w.clone(), det_l];
@@ -187,32 +205,81 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<QPoly>, Vec<QPoly>),
     }
 }
 
-fn quaternion_curve(curve: &Bezier<Quat>) -> [QPoly; 4] {
+/// `(M(q), |q|²)` of a quaternion curve: in i128 ([`SmallPoly`], lifted
+/// back) when the numbers fit, else over [`ZPoly`]; the same polynomials.
+fn rotation(q: &[ZPoly; 4]) -> (Mat3<ZPoly>, ZPoly) {
+    let small = q.each_ref().map(SmallPoly::lowered);
+    let m: Option<Vec<ZPoly>> = rotation_numerator(&small)
+        .iter()
+        .flatten()
+        .map(SmallPoly::to_zpoly)
+        .collect();
+    match (m, norm2(&small).to_zpoly()) {
+        (Some(m), Some(n)) => {
+            let mut m = m.into_iter();
+            let m =
+                std::array::from_fn(|_| std::array::from_fn(|_| m.next().expect("nine entries")));
+            (m, n)
+        }
+        _ => (rotation_numerator(q), norm2(q)),
+    }
+}
+
+fn quaternion_curve(curve: &Bezier<Quat>) -> [ZPoly; 4] {
     // The rotation of q is that of any positive multiple, so the weight
     // curve's denominator drops out; the weights stay in the numerators.
     to_poly_curve(curve).numerators
 }
 
-/// The matrix over ℚ[u] times the positive rational that makes its entries
-/// integer polynomials with no common integer factor (a constant factor
-/// `c` of a placement would rescale λ by `c²` and grow every coefficient).
-fn to_integer_matrix(n: &Mat4<QPoly>) -> Mat4<ZPoly> {
-    let entries = || n.iter().flatten().filter(|e| !e.is_zero());
-    let den = entries().fold(Int::one(), |l, e| l.lcm(e.scale().denom()));
-    let num = entries().fold(Int::zero(), |g, e| g.gcd(e.scale().numer()));
-    let scale = Rat::new(den, num).unwrap_or_else(Rat::one);
-    n.each_ref().map(|row| {
-        row.each_ref().map(|e| {
-            let factor = (&scale * e.scale()).floor();
-            e.prim().mul_int(&factor)
-        })
-    })
+/// The matrix divided by the gcd of all its coefficients: the positive
+/// multiple of a frame's matrix with integer polynomial entries and no
+/// common integer factor (a constant factor `c` of a placement would
+/// rescale λ by `c²` and grow every coefficient). It does not depend on the
+/// scaling of the frame ([`Frame`]).
+fn primitive_matrix(n: Mat4<ZPoly>) -> Mat4<ZPoly> {
+    let g = n.iter().flatten().fold(Int::zero(), |g, e| {
+        if g.is_one() {
+            g
+        } else {
+            g.gcd(&e.content())
+        }
+    });
+    if g.is_zero() || g.is_one() {
+        return n;
+    }
+    n.map(|row| row.map(|e| e.div_exact_int(&g)))
 }
 
 /// `v` times the lcm of its denominators.
 fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
-    let den = v.iter().fold(Int::one(), |l, r| l.lcm(r.denom()));
-    v.each_ref().map(|x| x.numer() * &den.div_exact(x.denom()))
+    let den = common_denominator(v);
+    v.each_ref().map(|x| times_denominator(x, &den))
+}
+
+/// `body_diagonal(radii)` times the lcm of its entries' denominators, in
+/// integers only. With `rᵢ = nᵢ/dᵢ`, `M = (d₀d₁d₂)²` is a common
+/// denominator of the entries `e`, and `E = M·e` is `body_diagonal` of the
+/// numerators with row `i < 3` times `dᵢ²`:
+/// `[(d₀n₁n₂)², (n₀d₁n₂)², (n₀n₁d₂)², −(n₀n₁n₂)²]`. The integers `t` with
+/// `t·e` integral are the multiples of the lcm `L` of the reduced
+/// denominators, and `L | M`; so `L = M/k` for the largest `k` dividing `M`
+/// and every `Eⱼ`, `k = gcd(M, E)`, and the result `L·e` is `E/k`.
+fn integer_diagonal(radii: &[Rat; 3]) -> [Int; 4] {
+    let e = body_diagonal(&radii.each_ref().map(|r| r.numer().clone()));
+    let [d0, d1, d2] = radii.each_ref().map(Rat::denom);
+    let m = d0 * d1 * d2;
+    let squares = [d0, d1, d2].map(|d| d * d);
+    let scaled: [Int; 4] = std::array::from_fn(|i| match squares.get(i) {
+        Some(s) if !s.is_one() => &e[i] * s,
+        _ => e[i].clone(),
+    });
+    let k = scaled
+        .iter()
+        .fold(&m * &m, |g, x| if g.is_one() { g } else { g.gcd(x) });
+    if k.is_one() {
+        return scaled;
+    }
+    scaled.map(|x| x.div_exact(&k))
 }
 
 /// A placed body: its placement, its body quadric and what is known about
@@ -220,7 +287,7 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
 /// when asked for (each route to `f` needs one of them).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlacedQuadric {
-    frame: Frame<QPoly>,
+    frame: Frame<ZPoly>,
     /// The body quadric `diag(D)` (interior `XᵀDX < 0`), scaled to integers.
     pub diagonal: [ZPoly; 4],
     /// Primitive polynomials nonzero on the span such that `det M(u)` is a
@@ -232,13 +299,30 @@ impl PlacedQuadric {
     /// The homogeneous body → world matrix `M(u)` with integer polynomial
     /// entries, up to a factor nonzero on the span.
     pub fn placement(&self) -> Mat4<ZPoly> {
-        to_integer_matrix(&self.frame.forward())
+        primitive_matrix(self.frame.forward())
     }
 
     /// The world → body matrix `N(u) ∝ M(u)⁻¹` with integer polynomial
     /// entries, up to a factor nonzero on the span.
     pub fn inverse(&self) -> Mat4<ZPoly> {
-        to_integer_matrix(&self.frame.inverse())
+        primitive_matrix(self.frame.inverse())
+    }
+
+    /// [`PlacedQuadric::quadric`] with `i128` coefficients ([`SmallPoly`]),
+    /// or `None` if a number on the way does not fit: the same matrix (the
+    /// inverse placement made primitive, then `NᵀDN`), without big-integer
+    /// arithmetic.
+    pub fn quadric_small(&self) -> Option<Mat4<SmallPoly>> {
+        let n = self.frame.map(SmallPoly::lowered).inverse();
+        let g = n.iter().flatten().try_fold(0, |g, e| e.gcd_with(g))?;
+        let n = if g > 1 {
+            let g = i64::try_from(g).ok()?;
+            n.map(|row| row.map(|e| e.div_small(g)))
+        } else {
+            n
+        };
+        let q = congruence(&n, &self.diagonal.each_ref().map(SmallPoly::lowered));
+        q.iter().flatten().all(SmallPoly::is_exact).then_some(q)
     }
 
     /// Upper bounds `(deg M, deg N)` on the entries' degrees of
@@ -255,13 +339,10 @@ impl PlacedQuadric {
         congruence(&self.inverse(), &self.diagonal)
     }
 
-    /// The longest number of the placement and body quadric, in bits (the
-    /// larger of a rational's numerator and denominator): a size estimate.
+    /// The longest number of the placement (its integer frame) and body
+    /// quadric, in bits: a size estimate.
     pub fn bits(&self) -> u64 {
-        let poly = |p: &QPoly| {
-            let s = p.scale();
-            s.numer().bits().max(s.denom().bits()) + p.prim().max_bits()
-        };
+        let poly = ZPoly::max_bits;
         let frame = match &self.frame {
             Frame::Rigid { m, n, center, w } => m
                 .iter()
@@ -298,39 +379,23 @@ impl PlacedQuadric {
         let Frame::Rigid { m, n, center, w } = &self.frame else {
             return None;
         };
-        let constant = |p: &QPoly| p.degree().unwrap_or(0) == 0;
+        let constant = |p: &ZPoly| p.degree().unwrap_or(0) == 0;
         if !(constant(n) && constant(w) && m.iter().flatten().all(constant)) {
             return None;
         }
-        // Every input over one denominator D: m = M/D, n = n'/D, w = w'/D,
-        // center = C/D. Each entry of N = rigid_inverse(m, n, center, w) is
-        // a product of two inputs, so N·D² is integral, and the primitive
-        // integer matrix (to_integer_matrix) is N·D²/g with g the gcd of its
-        // coefficients: integer arithmetic only. N is rigid_inverse at a
-        // zero centre (the blocks X, z) plus the centre column.
+        // N = rigid_inverse(m, n, center, w) in integers (an integer frame),
+        // made primitive (primitive_matrix) by the gcd g of its coefficients:
+        // N is rigid_inverse at a zero centre (the blocks X, z) plus the
+        // centre column.
         let (m, n, w) = (
             m.each_ref().map(|r| r.each_ref().map(|e| e.coeff(0))),
             n.coeff(0),
             w.coeff(0),
         );
-        let center = center.each_ref().map(QPoly::coeffs);
-        let rats = || {
-            m.iter()
-                .flatten()
-                .chain([&n, &w])
-                .chain(center.iter().flatten())
-        };
-        let den = rats().fold(Int::one(), |l, r| l.lcm(r.denom()));
-        let int = |r: &Rat| r.numer() * &den.div_exact(r.denom());
-        let (m, n, w) = (
-            m.each_ref().map(|r| r.each_ref().map(int)),
-            int(&n),
-            int(&w),
-        );
-        let center: [Vec<Int>; 3] = center.each_ref().map(|c| c.iter().map(int).collect());
+        let center: [&[Int]; 3] = center.each_ref().map(ZPoly::coeffs);
         let blocks = rigid_inverse(&m, &n, &[Int::zero(), Int::zero(), Int::zero()], &w);
         // The centre column −mᵀ·C(u), coefficient by coefficient.
-        let len = center.iter().map(Vec::len).max().unwrap_or(0);
+        let len = center.iter().map(|c| c.len()).max().unwrap_or(0);
         let column = (0..3).flat_map(|i| {
             let (m, center) = (&m, &center);
             (0..len).map(move |k| {
@@ -342,24 +407,30 @@ impl PlacedQuadric {
                 })
             })
         });
-        let g = blocks
-            .iter()
-            .flatten()
-            .cloned()
-            .chain(column)
-            .fold(Int::zero(), |g, v| g.gcd(&v));
+        // The gcd stops at 1 (the column, lazy, is then not even formed).
+        let mut g = Int::zero();
+        for v in blocks.iter().flatten().cloned().chain(column) {
+            if !v.is_zero() {
+                g = g.gcd(&v);
+                if g.is_one() {
+                    break;
+                }
+            }
+        }
         if g.is_zero() {
             return None;
         }
+        let blocks = if g.is_one() {
+            blocks
+        } else {
+            blocks.map(|row| row.map(|e| e.div_exact(&g)))
+        };
         // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
-        let centred = congruence(
-            &blocks.map(|row| row.map(|e| e.div_exact(&g))),
-            &self.diagonal.each_ref().map(|e| e.coeff(0)),
-        );
+        let centred = congruence(&blocks, &self.diagonal.each_ref().map(|e| e.coeff(0)));
         Some(Centred {
             k: std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
             kappa: -&centred[3][3],
-            centre: center.map(ZPoly::new),
+            centre: center.map(|c| ZPoly::new(c.to_vec())),
             denominator: w,
         })
     }
@@ -379,12 +450,12 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
     let (frame, factors) = frame(&body.motion, span)?;
     let det_factors = factors
         .iter()
-        .map(|f| f.prim().clone())
+        .map(ZPoly::primitive_part)
         .filter(|f| f.degree().unwrap_or(0) > 0)
         .collect();
     Ok(PlacedQuadric {
         frame,
-        diagonal: rat_vec_to_int(&body_diagonal(&body.radii)).map(ZPoly::constant),
+        diagonal: integer_diagonal(&body.radii).map(ZPoly::constant),
         det_factors,
     })
 }
@@ -433,6 +504,178 @@ mod tests {
             moving_quadric(&weighted, &span).unwrap(),
             moving_quadric(&scaled, &span).unwrap()
         );
+    }
+
+    /// `Σ Bᵢⁿ(u)·wᵢ·Pᵢ / Σ Bᵢⁿ(u)·wᵢ` over ℚ, from the definition.
+    fn bezier_at<const N: usize>(curve: &Bezier<[Rat; N]>, u: &Rat) -> [Rat; N] {
+        let n = curve.points.len() - 1;
+        let mut num: [Rat; N] = std::array::from_fn(|_| Rat::zero());
+        let mut den = Rat::zero();
+        for (i, p) in curve.points.iter().enumerate() {
+            let binom = ccd_poly::binomials(n)[i].clone();
+            let mut b = Rat::from_int(binom);
+            for _ in 0..i {
+                b = &b * u;
+            }
+            for _ in i..n {
+                b = &b * &(&Rat::one() - u);
+            }
+            let w = curve.weights.as_ref().map_or(Rat::one(), |w| w[i].clone());
+            let bw = &b * &w;
+            for (x, c) in num.iter_mut().zip(p) {
+                *x = &*x + &(&bw * c);
+            }
+            den = &den + &bw;
+        }
+        num.map(|x| &x / &den)
+    }
+
+    /// The world quadric at `u` over ℚ from the contract's formulas:
+    /// `A = Nᵀ·diag(1/r², −1)·N` with `N = M⁻¹`, `M` the placement
+    /// (`R(q) = M(q)/|q|²` or `[L | d]`) at `u`.
+    fn quadric_by_definition(body: &Body, u: &Rat) -> Mat4<Rat> {
+        let zero = || Rat::zero();
+        let mut m: Mat4<Rat> = std::array::from_fn(|_| std::array::from_fn(|_| zero()));
+        m[3][3] = Rat::one();
+        let mut rigid = |q: &Quat, c: &[Rat; 3]| {
+            let n = norm2(q);
+            let r = rotation_numerator(q);
+            for i in 0..3 {
+                for j in 0..3 {
+                    m[i][j] = &r[i][j] / &n;
+                }
+                m[i][3] = c[i].clone();
+            }
+        };
+        match &body.motion {
+            Motion::Static {
+                center,
+                orientation,
+            } => rigid(orientation, center),
+            Motion::Translation {
+                center,
+                orientation,
+            } => rigid(orientation, &bezier_at(center, u)),
+            Motion::Rigid {
+                orientation,
+                center,
+            } => rigid(&bezier_at(orientation, u), &bezier_at(center, u)),
+            Motion::Affine { matrix } => {
+                let e = bezier_at(&matrix.flattened(), u);
+                for (i, row) in m.iter_mut().take(3).enumerate() {
+                    for (j, x) in row.iter_mut().enumerate() {
+                        *x = e[4 * i + j].clone();
+                    }
+                }
+            }
+            Motion::Helical { .. } => unreachable!(),
+        }
+        // N = adj(M)/det(M); D = diag(1/r0², 1/r1², 1/r2², −1).
+        let det = ccd_quadric::det4(&m);
+        let n = ccd_quadric::adj4(&m).map(|row| row.map(|x| &x / &det));
+        let mut d = body
+            .radii
+            .each_ref()
+            .map(|r| &Rat::one() / &(r * r))
+            .to_vec();
+        d.push(-Rat::one());
+        congruence(
+            &n,
+            &[d[0].clone(), d[1].clone(), d[2].clone(), d[3].clone()],
+        )
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The integer quadric of the integer frame is a positive multiple
+        /// of the quadric the contract defines, at several `u` (a sign or a
+        /// scaling broken anywhere in the frame fails here).
+        #[test]
+        fn quadric_is_a_positive_multiple_of_the_definition(
+            kind in 0usize..4,
+            nums in proptest::collection::vec(-9i64..10, 36),
+            dens in proptest::collection::vec(1i64..7, 36),
+            weights in proptest::collection::vec(1i64..5, 3),
+            weighted in proptest::bool::ANY,
+        ) {
+            let r = |k: usize| Rat::from_frac(nums[k], dens[k]);
+            let weights = weighted.then(|| weights.iter().map(|&w| Rat::from_frac(w, 2)).collect::<Vec<_>>());
+            let quat = |k: usize| -> Quat {
+                let q: Quat = std::array::from_fn(|i| r(k + i));
+                if q.iter().all(Rat::is_zero) { [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()] } else { q }
+            };
+            let vec3 = |k: usize| -> [Rat; 3] { std::array::from_fn(|i| r(k + i)) };
+            let centre = Bezier { points: vec![vec3(12), vec3(15), vec3(18)], weights: weights.clone() };
+            let motion = match kind {
+                0 => Motion::Static { center: vec3(12), orientation: quat(0) },
+                1 => Motion::Translation { center: centre, orientation: quat(0) },
+                2 => Motion::Rigid {
+                    orientation: Bezier { points: vec![quat(0), quat(4), quat(8)], weights: weights.clone() },
+                    center: centre,
+                },
+                _ => Motion::Affine {
+                    matrix: Bezier {
+                        points: (0..3)
+                            .map(|p| std::array::from_fn(|i| std::array::from_fn(|j| {
+                                let base = if i == j { Rat::from(8) } else { Rat::zero() };
+                                &base + &r(12 * p + 4 * i + j)
+                            })))
+                            .collect(),
+                        weights,
+                    },
+                },
+            };
+            let body = Body { radii: [r(24).abs() + Rat::one(), Rat::from_frac(1, 2), r(25).abs() + Rat::from(2)], motion };
+            let span = [Rat::zero(), Rat::one()];
+            let Ok(placed) = placed_quadric(&body, &span) else {
+                return Err(proptest::test_runner::TestCaseError::reject("degenerate motion"));
+            };
+            let quadric = placed.quadric();
+            // The i128 route gives the very same matrix when it fits.
+            if let Some(small) = placed.quadric_small() {
+                let lifted = small.map(|row| row.map(|e| e.to_zpoly().unwrap()));
+                proptest::prop_assert_eq!(&lifted, &quadric);
+            }
+            for u in [Rat::zero(), Rat::from_frac(1, 3), Rat::from_frac(1, 2), Rat::one()] {
+                let exact = quadric_by_definition(&body, &u);
+                let ours = quadric.each_ref().map(|row| row.each_ref().map(|e| e.eval_rat(&u)));
+                // ours = s·exact with s > 0; exact[3][3] − … : find s from a nonzero entry.
+                let (i, j) = (0..16).map(|k| (k / 4, k % 4)).find(|&(i, j)| !exact[i][j].is_zero()).unwrap();
+                let s = &ours[i][j] / &exact[i][j];
+                proptest::prop_assert!(s.signum() > 0, "negative multiple at u = {u:?}");
+                for (orow, erow) in ours.iter().zip(&exact) {
+                    for (o, e) in orow.iter().zip(erow) {
+                        proptest::prop_assert_eq!(o, &(&s * e));
+                    }
+                }
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// The i128 rotation is the ZPoly one, and a quaternion too long
+        /// for i128 takes the ZPoly route.
+        #[test]
+        fn rotation_in_i128_is_exact(
+            q in proptest::collection::vec(proptest::collection::vec(-1000i64..1000, 1..4), 4),
+            big in 0u32..3,
+        ) {
+            let scale = Int::from(7).pow(30 * big);
+            let q: [ZPoly; 4] = std::array::from_fn(|i| ZPoly::from_i64s(&q[i]).mul_int(&scale));
+            let (m, n) = rotation(&q);
+            proptest::prop_assert_eq!(m, rotation_numerator(&q));
+            proptest::prop_assert_eq!(n, norm2(&q));
+        }
+
+        /// The integer body diagonal is `body_diagonal` over ℚ times the
+        /// lcm of its denominators.
+        #[test]
+        fn integer_diagonal_matches_the_rational_one(
+            radii in proptest::collection::vec((1i64..60, 1i64..60), 3),
+        ) {
+            let r: [Rat; 3] = std::array::from_fn(|i| Rat::from_frac(radii[i].0, radii[i].1));
+            proptest::prop_assert_eq!(integer_diagonal(&r), rat_vec_to_int(&body_diagonal(&r)));
+        }
     }
 
     #[test]

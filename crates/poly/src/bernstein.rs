@@ -55,6 +55,25 @@ pub struct Bernstein {
     coeffs: Vec<Int>,
 }
 
+/// The power form `Σ_j a_j u^j` of `Σ_i b_i B_i^n(u)` (`n + 1 = b.len()`) on
+/// `[0, 1]` for integer `b_i`: the `a_j` are integers, from
+/// reverse–shift(−1)–reverse of `C(n,i)·b_i` (module docs; additions and
+/// `n + 1` products only, no rationals). Zero for an empty `b`.
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_poly::{bernstein_to_power, ZPoly};
+/// // 1·B_0^2 + 5·B_1^2 − 3·B_2^2 = 1 + 8u − 12u².
+/// let p = bernstein_to_power(&[1, 5, -3].map(Int::from));
+/// assert_eq!(p, ZPoly::from_i64s(&[1, 8, -12]));
+/// ```
+pub fn bernstein_to_power(b: &[Int]) -> ZPoly {
+    if b.is_empty() {
+        return ZPoly::zero();
+    }
+    ZPoly::new(reverse_shift_reverse(times_binomials(b), -1))
+}
+
 /// `C(n, 0), …, C(n, n)`.
 ///
 /// ```

@@ -27,7 +27,7 @@ mod qpoly;
 mod small;
 mod zpoly;
 
-pub use bernstein::{binomials, Bernstein};
+pub use bernstein::{bernstein_to_power, binomials, Bernstein};
 pub use bernstein_f64::BernsteinF64;
 pub use qpoly::QPoly;
 pub use small::SmallPoly;

@@ -427,6 +427,20 @@ const FIRST: [NttPrime; 48] = [
     },
 ];
 
+/// The table with at least `count` primes.
+fn table(count: usize) -> std::sync::MutexGuard<'static, Vec<NttPrime>> {
+    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
+    if table.is_empty() {
+        table.extend_from_slice(&FIRST);
+    }
+    while table.len() < count {
+        let prev = table.last().map_or(1u64 << 62, |q| q.p);
+        let next = next_prime(prev);
+        table.push(next);
+    }
+    table
+}
+
 /// The next table prime below `p_prev`, found by testing `c·2^20 + 1` for
 /// decreasing `c`.
 fn next_prime(p_prev: u64) -> NttPrime {
@@ -453,34 +467,15 @@ fn next_prime(p_prev: u64) -> NttPrime {
     }
 }
 
-/// The first `count` table primes (descending from `2^62`), generated on
-/// first use and cached for the life of the process.
+/// The first `count` table primes (descending from `2^62`): the known
+/// ones, then generated on first use and cached for the life of the process.
 pub(crate) fn ntt_primes(count: usize) -> Vec<NttPrime> {
-    let mut table = table_up_to(count);
-    table.truncate(count);
-    table
-}
-
-/// The table extended to at least `count` primes: [`FIRST`], then searched.
-fn table_up_to(count: usize) -> Vec<NttPrime> {
-    let mut table = PRIMES.lock().unwrap_or_else(|e| e.into_inner());
-    if table.is_empty() {
-        table.extend_from_slice(&FIRST);
-    }
-    while table.len() < count {
-        let prev = table.last().map_or(1u64 << 62, |q| q.p);
-        let next = next_prime(prev);
-        table.push(next);
-    }
-    table.clone()
+    table(count)[..count].to_vec()
 }
 
 /// The `i`-th table prime.
 pub(crate) fn ntt_prime(i: usize) -> NttPrime {
-    FIRST
-        .get(i)
-        .copied()
-        .unwrap_or_else(|| table_up_to(i + 1)[i])
+    FIRST.get(i).copied().unwrap_or_else(|| table(i + 1)[i])
 }
 
 #[cfg(test)]

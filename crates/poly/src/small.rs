@@ -18,7 +18,9 @@ use ccd_arith::{Int, RingOps};
 const CAP: usize = 17;
 
 /// A polynomial in `ℤ[t]` with `i128` coefficients (low → high), or the
-/// marker that an exact value did not fit (module docs).
+/// marker that an exact value did not fit (module docs). The slots past
+/// the length are zero (every constructor keeps this), so operations read
+/// them without bounds tests.
 ///
 /// ```
 /// use ccd_arith::RingOps;
@@ -61,7 +63,14 @@ impl SmallPoly {
                 None => return SmallPoly::overflowed(),
             }
         }
-        let len = c[..len].iter().rposition(|&v| v != 0).map_or(0, |i| i + 1);
+        SmallPoly::from_array(c, len)
+    }
+
+    /// The polynomial `c[..len]` (the slots past `len` zero), trimmed.
+    fn from_array(c: [i128; CAP], mut len: usize) -> SmallPoly {
+        while len > 0 && c[len - 1] == 0 {
+            len -= 1;
+        }
         SmallPoly {
             c,
             len,
@@ -87,18 +96,104 @@ impl SmallPoly {
             ZPoly::new(
                 self.c[..self.len]
                     .iter()
-                    .map(|&v| Int::from_i128(v))
+                    // The one-word constructor when it fits: much cheaper.
+                    .map(|&v| i64::try_from(v).map_or_else(|_| Int::from_i128(v), Int::from_i64))
                     .collect(),
             )
         })
     }
 
-    fn coeff(&self, i: usize) -> i128 {
-        if i < self.len {
-            self.c[i]
-        } else {
-            0
+    /// Whether the value is exact (no operation overflowed).
+    pub fn is_exact(&self) -> bool {
+        !self.overflow
+    }
+
+    /// The degree (`None` for zero or an overflowed value).
+    pub fn degree(&self) -> Option<usize> {
+        (!self.overflow && self.len > 0).then(|| self.len - 1)
+    }
+
+    /// The bit length of the largest coefficient (`0` for zero; `128`
+    /// for an overflowed value, which fits nothing).
+    pub fn max_bits(&self) -> u64 {
+        if self.overflow {
+            return 128;
         }
+        let m = self.c[..self.len]
+            .iter()
+            .map(|v| v.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        u64::from(128 - m.leading_zeros())
+    }
+
+    /// `gcd(g, content)`: the gcd of `g` and the coefficients, `≥ 0` (so
+    /// `gcd_with(0)` is the content, and folding it over several
+    /// polynomials gives their common content); `None` for an overflowed
+    /// value.
+    pub fn gcd_with(&self, g: u128) -> Option<u128> {
+        (!self.overflow).then(|| {
+            self.c[..self.len].iter().fold(g, |g, v| {
+                crate::zpoly::division::gcd_u128(g, v.unsigned_abs())
+            })
+        })
+    }
+
+    /// The exact quotient in `ℤ[t]`: `Some(q)` with `self = q·d`; `None`
+    /// when `d` does not divide `self` (or `d = 0`); an overflowed `q` when
+    /// either input is overflowed or a step leaves `i128` (then nothing is
+    /// known). Long division from the top, as [`ZPoly::div_exact`]: the
+    /// first inexact quotient coefficient or a nonzero remainder answers
+    /// `None`.
+    ///
+    /// ```
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let s = |c: &[i64]| SmallPoly::from_zpoly(&ZPoly::from_i64s(c)).unwrap();
+    /// // 3t² + 2 by 2t + 1: no.
+    /// assert!(s(&[2, 0, 3]).div_exact(&s(&[1, 2])).is_none());
+    /// // 2t² − t − 1 = (2t + 1)(t − 1).
+    /// let q = s(&[-1, -1, 2]).div_exact(&s(&[1, 2])).unwrap();
+    /// assert_eq!(q.to_zpoly(), Some(ZPoly::from_i64s(&[-1, 1])));
+    /// ```
+    pub fn div_exact(&self, d: &SmallPoly) -> Option<SmallPoly> {
+        if self.overflow || d.overflow {
+            return Some(SmallPoly::overflowed());
+        }
+        let dd = d.len.checked_sub(1)?;
+        if self.len == 0 {
+            return Some(self.clone());
+        }
+        if self.len < d.len {
+            return None;
+        }
+        let dl = d.c[dd];
+        let mut r = self.c;
+        let mut q = [0; CAP];
+        for k in (0..self.len - dd).rev() {
+            let top = r[k + dd];
+            if top == 0 {
+                continue;
+            }
+            let Some(rem) = top.checked_rem(dl) else {
+                return Some(SmallPoly::overflowed());
+            };
+            if rem != 0 {
+                return None;
+            }
+            let qk = top / dl; // exact, and i128::MIN / −1 was caught above
+            for (ri, &di) in r[k..k + dd].iter_mut().zip(&d.c) {
+                match qk.checked_mul(di).and_then(|p| ri.checked_sub(p)) {
+                    Some(v) => *ri = v,
+                    None => return Some(SmallPoly::overflowed()),
+                }
+            }
+            r[k + dd] = 0;
+            q[k] = qk;
+        }
+        if r[..dd].iter().any(|&x| x != 0) {
+            return None;
+        }
+        Some(SmallPoly::from_array(q, self.len - dd))
     }
 
     /// Coefficientwise `op`, overflow propagated.
@@ -107,19 +202,32 @@ impl SmallPoly {
             return SmallPoly::overflowed();
         }
         let len = self.len.max(o.len);
-        SmallPoly::build((0..len).map(|i| op(self.coeff(i), o.coeff(i))), len)
+        let mut c = [0; CAP];
+        for (slot, (&x, &y)) in c.iter_mut().zip(self.c.iter().zip(&o.c)).take(len) {
+            match op(x, y) {
+                Some(v) => *slot = v,
+                None => return SmallPoly::overflowed(),
+            }
+        }
+        SmallPoly::from_array(c, len)
     }
 }
 
 impl RingOps for SmallPoly {
     fn zero() -> Self {
-        SmallPoly::build(std::iter::empty(), 0)
+        SmallPoly {
+            c: [0; CAP],
+            len: 0,
+            overflow: false,
+        }
     }
     fn one() -> Self {
         SmallPoly::from_i64(1)
     }
     fn from_i64(v: i64) -> Self {
-        SmallPoly::build(std::iter::once(Some(v as i128)), 1)
+        let mut c = [0; CAP];
+        c[0] = v as i128;
+        SmallPoly::from_array(c, 1)
     }
     fn is_zero(&self) -> bool {
         !self.overflow && self.len == 0
@@ -171,7 +279,7 @@ impl RingOps for SmallPoly {
                 }
             }
         }
-        SmallPoly::build(c.into_iter().map(Some), len)
+        SmallPoly::from_array(c, len)
     }
     fn negated(&self) -> Self {
         self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
@@ -214,6 +322,23 @@ mod tests {
             check(sa.minus(&sb), &a - &b, small)?;
             check(sa.times(&sb), &a * &b, small)?;
             check(sa.negated(), -&a, small)?;
+            // Exact division: the product by b divides back to a; a + 1
+            // over b divides exactly when ZPoly says so.
+            if !b.is_zero() {
+                if let Some(q) = sa.times(&sb).div_exact(&sb) {
+                    check(q, a.clone(), small)?;
+                } else {
+                    prop_assert!(false, "a·b / b must divide");
+                }
+                let a1 = &a + &ZPoly::one();
+                if let Some(sa1) = SmallPoly::from_zpoly(&a1) {
+                    match (sa1.div_exact(&sb), a1.div_exact(&b)) {
+                        (None, z) => prop_assert!(z.is_none()),
+                        (Some(q), Some(z)) => check(q, z, small)?,
+                        (Some(q), None) => prop_assert!(!q.is_exact()),
+                    }
+                }
+            }
             check(sa.times(&SmallPoly::from_i64(6)).div_small(3), &a * &ZPoly::from_i64s(&[2]), small)?;
         }
     }

@@ -15,9 +15,7 @@ pub type Mat3<R> = [[R; 3]; 3];
 /// computed once.
 pub fn congruence<R: RingOps>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
     // scaled[k][j] = d_k · N[k][j]
-    let scaled: Vec<Vec<R>> = (0..4)
-        .map(|k| (0..4).map(|j| d[k].times(&n[k][j])).collect())
-        .collect();
+    let scaled: Mat4<R> = std::array::from_fn(|k| std::array::from_fn(|j| d[k].times(&n[k][j])));
     let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
     for i in 0..4 {
         for j in i..4 {

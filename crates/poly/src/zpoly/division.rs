@@ -5,7 +5,7 @@ use super::ZPoly;
 use ccd_arith::Int;
 
 /// Binary gcd (`gcd(0, 0) = 0`).
-fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
     if a == 0 || b == 0 {
         return a | b;
     }
