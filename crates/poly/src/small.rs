@@ -119,11 +119,10 @@ impl SmallPoly {
         if self.overflow {
             return 128;
         }
+        // The bitwise or of the magnitudes has the largest one's top bit.
         let m = self.c[..self.len]
             .iter()
-            .map(|v| v.unsigned_abs())
-            .max()
-            .unwrap_or(0);
+            .fold(0u128, |m, v| m | v.unsigned_abs());
         u64::from(128 - m.leading_zeros())
     }
 
@@ -252,16 +251,8 @@ impl RingOps for SmallPoly {
         let mut c = [0i128; CAP];
         // No term and no running sum can leave i128 when the sizes say so:
         // then plain products, else checked ones.
-        let bits = |p: &SmallPoly| {
-            let m = p.c[..p.len]
-                .iter()
-                .map(|v| v.unsigned_abs())
-                .max()
-                .unwrap_or(0);
-            128 - m.leading_zeros()
-        };
         let terms = self.len.min(o.len) as u32;
-        let safe = bits(self) + bits(o) + (32 - terms.leading_zeros()) <= 126;
+        let safe = self.max_bits() + o.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
         for (i, &x) in self.c[..self.len].iter().enumerate() {
             if x == 0 {
                 continue;
