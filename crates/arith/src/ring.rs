@@ -34,6 +34,19 @@ pub trait RingOps: Clone + std::fmt::Debug {
     /// `self / k` for a small nonzero integer `k`; in an exact ring the
     /// caller guarantees that `k` divides `self`.
     fn div_small(&self, k: i64) -> Self;
+    /// `self ← self + x·y`, or `self ← self − x·y` when `negate`: the
+    /// multiply-accumulate of dot products and determinant expansions.
+    /// The default is exactly `self.plus(&x.times(y))` (resp. `minus`), so
+    /// approximate types round as before; an exact type with fixed storage
+    /// may override it to accumulate in place (same value: exactness).
+    fn add_product(&mut self, x: &Self, y: &Self, negate: bool) {
+        let term = x.times(y);
+        *self = if negate {
+            self.minus(&term)
+        } else {
+            self.plus(&term)
+        };
+    }
 }
 
 /// An exact commutative ring with exact division where it divides.

@@ -119,11 +119,10 @@ impl SmallPoly {
         if self.overflow {
             return 128;
         }
+        // The bitwise or of the magnitudes has the largest one's top bit.
         let m = self.c[..self.len]
             .iter()
-            .map(|v| v.unsigned_abs())
-            .max()
-            .unwrap_or(0);
+            .fold(0u128, |m, v| m | v.unsigned_abs());
         u64::from(128 - m.leading_zeros())
     }
 
@@ -252,16 +251,8 @@ impl RingOps for SmallPoly {
         let mut c = [0i128; CAP];
         // No term and no running sum can leave i128 when the sizes say so:
         // then plain products, else checked ones.
-        let bits = |p: &SmallPoly| {
-            let m = p.c[..p.len]
-                .iter()
-                .map(|v| v.unsigned_abs())
-                .max()
-                .unwrap_or(0);
-            128 - m.leading_zeros()
-        };
         let terms = self.len.min(o.len) as u32;
-        let safe = bits(self) + bits(o) + (32 - terms.leading_zeros()) <= 126;
+        let safe = self.max_bits() + o.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
         for (i, &x) in self.c[..self.len].iter().enumerate() {
             if x == 0 {
                 continue;
@@ -283,6 +274,63 @@ impl RingOps for SmallPoly {
     }
     fn negated(&self) -> Self {
         self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
+    }
+    /// In place: `c_k ← c_k ± Σ_{i+j=k} x_i·y_j` on the slots themselves,
+    /// without the product's 17-slot temporary. Plain machine arithmetic
+    /// when the sizes bound every running sum below `2^127`
+    /// (`|c_k| < 2^126` and `Σ |x_i·y_j| < 2^126`), checked otherwise;
+    /// an overflow (or a product of degree above the capacity) marks the
+    /// result, as `self.plus(&x.times(y))` would.
+    fn add_product(&mut self, x: &Self, y: &Self, negate: bool) {
+        if self.overflow || x.overflow || y.overflow {
+            *self = SmallPoly::overflowed();
+            return;
+        }
+        if x.len == 0 || y.len == 0 {
+            return;
+        }
+        let len = x.len + y.len - 1;
+        if len > CAP {
+            *self = SmallPoly::overflowed();
+            return;
+        }
+        let terms = x.len.min(y.len) as u32;
+        let safe = self.max_bits() <= 126
+            && x.max_bits() + y.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
+        for (i, &xi) in x.c[..x.len].iter().enumerate() {
+            if xi == 0 {
+                continue;
+            }
+            if safe {
+                // |x_i| < 2^126: its negation fits.
+                let xi = if negate { -xi } else { xi };
+                for (slot, &yj) in self.c[i..].iter_mut().zip(&y.c[..y.len]) {
+                    *slot += xi * yj;
+                }
+                continue;
+            }
+            for (slot, &yj) in self.c[i..].iter_mut().zip(&y.c[..y.len]) {
+                let next = xi.checked_mul(yj).and_then(|p| {
+                    if negate {
+                        slot.checked_sub(p)
+                    } else {
+                        slot.checked_add(p)
+                    }
+                });
+                match next {
+                    Some(v) => *slot = v,
+                    None => {
+                        *self = SmallPoly::overflowed();
+                        return;
+                    }
+                }
+            }
+        }
+        let mut n = self.len.max(len);
+        while n > 0 && self.c[n - 1] == 0 {
+            n -= 1;
+        }
+        self.len = n;
     }
     /// Exact division; a coefficient `k` does not divide counts as an
     /// overflow (the exact value is not in `ℤ[t]`).
@@ -322,6 +370,13 @@ mod tests {
             check(sa.minus(&sb), &a - &b, small)?;
             check(sa.times(&sb), &a * &b, small)?;
             check(sa.negated(), -&a, small)?;
+            // In-place multiply-accumulate: a ± a·b against ZPoly.
+            for negate in [false, true] {
+                let mut acc = sa.clone();
+                acc.add_product(&sa, &sb, negate);
+                let z = if negate { &a - &(&a * &b) } else { &a + &(&a * &b) };
+                check(acc, z, small)?;
+            }
             // Exact division: the product by b divides back to a; a + 1
             // over b divides exactly when ZPoly says so.
             if !b.is_zero() {

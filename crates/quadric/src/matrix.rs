@@ -22,7 +22,7 @@ pub fn congruence<R: RingOps>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
             let mut s = R::zero();
             for k in 0..4 {
                 if !n[k][i].is_zero() && !scaled[k][j].is_zero() {
-                    s = s.plus(&n[k][i].times(&scaled[k][j]));
+                    s.add_product(&n[k][i], &scaled[k][j], false);
                 }
             }
             out[j][i] = s.clone();
@@ -40,9 +40,9 @@ fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
 /// `x[r][i]·y[r+1][j] − x[r][j]·y[r+1][i]`: the 2×2 minor with its top row
 /// from `x` and its bottom row from `y`.
 fn mixed_minor2<R: RingOps>(x: &Mat4<R>, y: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
-    x[r][i]
-        .times(&y[r + 1][j])
-        .minus(&x[r][j].times(&y[r + 1][i]))
+    let mut m = x[r][i].times(&y[r + 1][j]);
+    m.add_product(&x[r][j], &y[r + 1][i], true);
+    m
 }
 
 /// `m` times the lcm of its entries' denominators: the same quadric (a
@@ -85,12 +85,7 @@ const LAPLACE_PAIRS: [LaplacePair; 6] = [
 pub fn det4<R: RingOps>(m: &Mat4<R>) -> R {
     let mut det = R::zero();
     for ((i, j), (k, l), positive) in LAPLACE_PAIRS {
-        let term = minor2(m, 0, i, j).times(&minor2(m, 2, k, l));
-        det = if positive {
-            det.plus(&term)
-        } else {
-            det.minus(&term)
-        };
+        det.add_product(&minor2(m, 0, i, j), &minor2(m, 2, k, l), !positive);
     }
     det
 }
@@ -176,12 +171,7 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
         let (top, bottom) = (minor(0, i, j), minor(2, k, l));
         for (p, t) in top.iter().enumerate() {
             for (q, u) in bottom.iter().enumerate() {
-                let term = t.times(u);
-                f[p + q] = if positive {
-                    f[p + q].plus(&term)
-                } else {
-                    f[p + q].minus(&term)
-                };
+                f[p + q].add_product(t, u, !positive);
             }
         }
     }
@@ -279,12 +269,7 @@ pub fn placed_characteristic<R: RingOps>(
             if upper.is_zero() || lower.is_zero() {
                 continue;
             }
-            let term = upper.times(lower);
-            plucker = if positive {
-                plucker.plus(&term)
-            } else {
-                plucker.minus(&term)
-            };
+            plucker.add_product(upper, lower, !positive);
         }
         if plucker.is_zero() {
             continue;
@@ -293,7 +278,7 @@ pub fn placed_characteristic<R: RingOps>(
         let weight = pa[(rest & 0xf) as usize].times(&pb[(rest >> 4) as usize]);
         let from_a = (t & 0xf).count_ones() as usize;
         // λ^(4 − |T∩A|) is coefficient index |T∩A| (high → low).
-        coeffs[from_a] = coeffs[from_a].plus(&weight.times(&plucker.times(&plucker)));
+        coeffs[from_a].add_product(&weight, &plucker.times(&plucker), false);
     }
     coeffs
 }

@@ -69,15 +69,16 @@ pub fn norm2<R: RingOps>(q: &[R; 4]) -> R {
 
 /// The homogeneous matrix `[[x, col], [0, corner]]`.
 fn block<R: RingOps>(x: Mat3<R>, col: [R; 3], corner: R) -> Mat4<R> {
-    let row = |i: usize| -> [R; 4] {
-        if i < 3 {
-            let [a, b, c] = x[i].clone();
-            [a, b, c, col[i].clone()]
-        } else {
-            [R::zero(), R::zero(), R::zero(), corner.clone()]
-        }
-    };
-    std::array::from_fn(row)
+    // The entries are moved, not cloned.
+    let [r0, r1, r2] = x;
+    let [c0, c1, c2] = col;
+    let row = |[a, b, c]: [R; 3], d: R| [a, b, c, d];
+    [
+        row(r0, c0),
+        row(r1, c1),
+        row(r2, c2),
+        [R::zero(), R::zero(), R::zero(), corner],
+    ]
 }
 
 /// `s·x` entrywise.
@@ -88,10 +89,11 @@ fn scaled<R: RingOps>(s: &R, x: &Mat3<R>) -> Mat3<R> {
 /// `−x·v`.
 fn minus_times<R: RingOps>(x: &Mat3<R>, v: &[R; 3]) -> [R; 3] {
     x.each_ref().map(|row| {
-        row.iter()
-            .zip(v)
-            .fold(R::zero(), |t, (a, b)| t.plus(&a.times(b)))
-            .negated()
+        let mut t = R::zero();
+        for (a, b) in row.iter().zip(v) {
+            t.add_product(a, b, false);
+        }
+        t.negated()
     })
 }
 
