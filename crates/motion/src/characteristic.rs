@@ -270,15 +270,22 @@ impl ExactDivision for SmallPoly {
     }
 }
 
-/// How often `pi` divides `p` (`p ≠ 0`); `None` on an overflow.
-fn multiplicity<P: ExactDivision>(p: &P, pi: &P) -> Option<usize> {
+/// How often `pi` divides `p` (`p ≠ 0`), and the cofactor `p/π^v`; `None`
+/// on an overflow.
+fn multiplicity<P: ExactDivision>(p: &P, pi: &P) -> Option<(usize, P)> {
     let mut q = p.clone();
     let mut v = 0;
     while let Some(next) = q.quotient(pi)? {
         q = next;
         v += 1;
     }
-    Some(v)
+    Some((v, q))
+}
+
+/// A cofactor `c_k/π^v_k` from the `i128` route or the exact one.
+enum Cofactor {
+    Small(SmallPoly),
+    Exact(ZPoly),
 }
 
 /// `c·π^e`, where `π^(−e)` divides `c` if `e < 0`; `None` on an overflow
@@ -347,27 +354,38 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
                 .as_ref()
                 .and_then(|pi| Some((SmallPoly::from_zpoly(&c[k])?, pi)))
         });
-        let v: [Option<usize>; 5] = std::array::from_fn(|k| {
+        // v_k and the cofactor c_k/π^v_k, in i128 when the numbers fit.
+        let split: [Option<(usize, Cofactor)>; 5] = std::array::from_fn(|k| {
             (!c[k].is_zero()).then(|| {
                 small[k]
                     .as_ref()
                     .and_then(|(ck, pi)| multiplicity(ck, *pi))
-                    .or_else(|| multiplicity(&c[k], &pi))
-                    .expect("ZPoly division is exact")
+                    .map(|(v, q)| (v, Cofactor::Small(q)))
+                    .unwrap_or_else(|| {
+                        let (v, q) = multiplicity(&c[k], &pi).expect("ZPoly division is exact");
+                        (v, Cofactor::Exact(q))
+                    })
             })
         });
+        let v: [Option<usize>; 5] = std::array::from_fn(|k| split[k].as_ref().map(|(v, _)| *v));
         let degs: [usize; 5] = std::array::from_fn(|k| c[k].degree().unwrap_or(0));
         let e = best_exponents(&v, &degs, pi.degree().unwrap_or(0));
-        for k in 0..5 {
-            // c_k·π^e_k, a polynomial since e_k >= −v_k.
-            if v[k].is_none() || e[k] == 0 {
+        for (k, part) in split.iter().enumerate() {
+            // c_k·π^e_k = cofactor·π^(v_k + e_k), a product since e_k >= −v_k
+            // (one more product rather than dividing c_k again).
+            let Some((vk, cofactor)) = part else { continue };
+            if e[k] == 0 {
                 continue;
             }
-            c[k] = small[k]
-                .as_ref()
-                .and_then(|(ck, pi)| times_power(ck, *pi, e[k])?.to_zpoly())
-                .or_else(|| times_power(&c[k], &pi, e[k]))
-                .expect("π^v_k divides c_k");
+            let total = *vk as i64 + e[k];
+            c[k] = match cofactor {
+                Cofactor::Small(q) => small_pi
+                    .as_ref()
+                    .and_then(|pi| times_power(q, pi, total)?.to_zpoly())
+                    .or_else(|| times_power(&q.to_zpoly()?, &pi, total)),
+                Cofactor::Exact(q) => times_power(q, &pi, total),
+            }
+            .expect("an exact cofactor times a power of π");
         }
     }
     // The common integer content (a positive constant).
