@@ -282,7 +282,9 @@ fn multiplicity<P: ExactDivision>(p: &P, pi: &P) -> Option<(usize, P)> {
     Some((v, q))
 }
 
-/// A cofactor `c_k/π^v_k` from the `i128` route or the exact one.
+/// A cofactor `c_k/π^v_k` from the `i128` route or the exact one (five of
+/// them live on the stack for one loop; boxing would only add heap traffic).
+#[allow(clippy::large_enum_variant)]
 enum Cofactor {
     Small(SmallPoly),
     Exact(ZPoly),
