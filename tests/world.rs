@@ -48,16 +48,24 @@ fn body() -> impl Strategy<Value = Body> {
                     orientation,
                 }
             }),
-        (quat(), quat(), vec3(4), vec3(4)).prop_map(|(q0, q1, c0, c1)| Motion::Rigid {
-            orientation: Bezier {
-                points: vec![q0, q1],
-                weights: None
-            },
-            center: Bezier {
-                points: vec![c0, c1],
-                weights: None
-            },
-        }),
+        (quat(), quat(), vec3(4), vec3(4))
+            // q1 = −c·q0 (c > 0) makes the curve pass through 0 on the span:
+            // no rotation there, an invalid body (QuaternionVanishes).
+            .prop_filter("a quaternion curve through zero", |(q0, q1, _, _)| {
+                let parallel = (0..4).all(|i| (0..4).all(|j| &q0[i] * &q1[j] == &q0[j] * &q1[i]));
+                let dot = (0..4).fold(Rat::zero(), |s, i| s + &q0[i] * &q1[i]);
+                !(parallel && dot.signum() < 0)
+            })
+            .prop_map(|(q0, q1, c0, c1)| Motion::Rigid {
+                orientation: Bezier {
+                    points: vec![q0, q1],
+                    weights: None
+                },
+                center: Bezier {
+                    points: vec![c0, c1],
+                    weights: None
+                },
+            }),
     ];
     (radii, motion).prop_map(|(radii, motion)| Body { radii, motion })
 }
