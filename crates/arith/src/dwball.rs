@@ -179,7 +179,8 @@ impl DwBall {
         DwBall::checked(c, 0.0, if rad.is_nan() { f64::INFINITY } else { rad })
     }
 
-    /// `self · 2^k`, exactly (the radius rounded up past underflow).
+    /// `self · 2^k`: exact while every word stays normal; a trailing word or
+    /// radius scaled below the normal range is charged for its rounding.
     pub fn mul_pow2(&self, k: i64) -> DwBall {
         let (mut hi, mut lo, mut rad) = (self.hi, self.lo, self.rad);
         let mut rest = k;
@@ -189,8 +190,15 @@ impl DwBall {
             (hi, lo, rad) = (hi * s, lo * s, rad * s);
             rest -= step;
         }
-        if self.rad > 0.0 {
-            rad = rad.max(TINY);
+        // A radius or trailing word scaled into the subnormal range may have
+        // been rounded: charge TINY (above any subnormal) for either.
+        if self.rad > 0.0 || (lo != 0.0 && lo.abs() < f64::MIN_POSITIVE) {
+            rad = rad.max(TINY)
+                + if lo.abs() < f64::MIN_POSITIVE {
+                    TINY
+                } else {
+                    0.0
+                };
         }
         DwBall::checked(hi, lo, rad)
     }
@@ -386,6 +394,23 @@ mod tests {
                 prop_assert!(holds(&b, &Rat::from_f64_exact(iv.hi).unwrap()));
             }
         }
+    }
+
+    /// A trailing word scaled into the subnormal range loses bits; the
+    /// radius must cover them.
+    #[test]
+    fn subnormal_trailing_word_is_charged() {
+        let lo = (1.0 + f64::EPSILON) * 2f64.powi(-125);
+        let b = DwBall {
+            hi: 1.0,
+            lo,
+            rad: 0.0,
+        }
+        .mul_pow2(-899);
+        let exact = (&Rat::one() + &Rat::from_f64_exact(lo).unwrap()).mul_pow2(-899);
+        assert!(b.is_known() && b.lo.abs() < f64::MIN_POSITIVE);
+        assert!(holds(&b, &exact));
+        assert!(b.rad > 0.0);
     }
 
     #[test]
