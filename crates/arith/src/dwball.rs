@@ -134,6 +134,15 @@ impl DwBall {
         }
     }
 
+    /// The ball that says nothing.
+    fn unknown() -> DwBall {
+        DwBall {
+            hi: f64::NAN,
+            lo: 0.0,
+            rad: f64::INFINITY,
+        }
+    }
+
     /// Whether the radius is finite (the ball says something).
     pub fn is_known(&self) -> bool {
         self.rad.is_finite()
@@ -190,15 +199,16 @@ impl DwBall {
             (hi, lo, rad) = (hi * s, lo * s, rad * s);
             rest -= step;
         }
-        // A radius or trailing word scaled into the subnormal range may have
-        // been rounded: charge TINY (above any subnormal) for either.
-        if self.rad > 0.0 || (lo != 0.0 && lo.abs() < f64::MIN_POSITIVE) {
-            rad = rad.max(TINY)
-                + if lo.abs() < f64::MIN_POSITIVE {
-                    TINY
-                } else {
-                    0.0
-                };
+        // A nonzero leading word flushed to zero would read as an exact zero.
+        if self.hi != 0.0 && hi == 0.0 {
+            return DwBall::unknown();
+        }
+        // A radius or trailing word scaled into the subnormal range (or
+        // flushed to zero) may have been rounded: charge TINY (above any
+        // subnormal) for either.
+        let lo_rounded = self.lo != 0.0 && lo.abs() < f64::MIN_POSITIVE;
+        if self.rad > 0.0 || lo_rounded {
+            rad = rad.max(TINY) + if lo_rounded { TINY } else { 0.0 };
         }
         DwBall::checked(hi, lo, rad)
     }
@@ -254,20 +264,18 @@ impl DwBall {
         // A lower bound of |o| (0 when it may vanish: no quotient then).
         let min_abs = o.abs_lower();
         if min_abs <= 0.0 || !self.is_known() || !o.is_known() {
-            return DwBall {
-                hi: f64::NAN,
-                lo: 0.0,
-                rad: f64::INFINITY,
-            };
+            return DwBall::unknown();
         }
         let qh = self.hi / o.hi;
         let (ph, pl) = two_prod(qh, o.hi);
         let r = ((self.hi - ph) - pl + self.lo - qh * o.lo) / o.hi;
         let (zh, zl) = fast_two_sum(qh, r);
         let q = DwBall::checked(zh, zl, 0.0);
-        // x/y − q = (x − q·y)/y for every x, y in the balls.
-        let residual = self.minus(&q.times(o));
-        DwBall::checked(zh, zl, residual.abs_upper() / min_abs * UP)
+        // x/y − q = (x − q·y)/y for every x, y in the balls (TINY covers a
+        // quotient of the bound that underflows).
+        let bound = self.minus(&q.times(o)).abs_upper();
+        let tiny = if bound > 0.0 { TINY } else { 0.0 };
+        DwBall::checked(zh, zl, bound / min_abs * UP + tiny)
     }
 }
 
@@ -296,12 +304,19 @@ impl RingOps for DwBall {
     fn times(&self, o: &Self) -> Self {
         let (hi, lo) = dw_mul(self.hi, self.lo, o.hi, o.lo);
         if hi == 0.0 && self.hi != 0.0 && o.hi != 0.0 {
-            return DwBall::checked(f64::NAN, 0.0, 0.0); // underflow
+            return DwBall::unknown(); // underflow
         }
         // |x·y − cx·cy| <= |cx|·ry + |cy|·rx + rx·ry, |c| <= |c.hi|·(1 + 2^(−52)).
+        // TINY covers products of radii that underflow (a centre 0 carries
+        // no rounding charge of its own).
+        let tiny = if self.rad > 0.0 || o.rad > 0.0 {
+            TINY
+        } else {
+            0.0
+        };
         let spread =
             (self.hi.abs() * o.rad + o.hi.abs() * self.rad) * (1.0 + pow2(-51)) + self.rad * o.rad;
-        DwBall::checked(hi, lo, (spread + ROUNDING * hi.abs()) * UP)
+        DwBall::checked(hi, lo, (spread + ROUNDING * hi.abs()) * UP + tiny)
     }
     fn negated(&self) -> Self {
         DwBall {
@@ -380,7 +395,7 @@ mod tests {
 
         /// Rationals and intervals convert to balls that hold them.
         #[test]
-        fn conversions_hold(n in any::<i64>(), d in 1i64..i64::MAX, j in 0u64..200, lo in -1e300f64..1e300, w in 0f64..1e300) {
+        fn conversions_hold(n in any::<i64>(), d in 1i64..i64::MAX, j in 0u64..1200, lo in -1e300f64..1e300, w in 0f64..1e300) {
             let r = Rat::from_frac(n, d);
             let b = DwBall::from_rat(&r);
             if b.is_known() { prop_assert!(holds(&b, &r)); }
@@ -411,6 +426,43 @@ mod tests {
         assert!(b.is_known() && b.lo.abs() < f64::MIN_POSITIVE);
         assert!(holds(&b, &exact));
         assert!(b.rad > 0.0);
+    }
+
+    /// Values below `f64`'s range never read as an exact zero: an exact
+    /// value shifted there, and products and quotients of a zero centre
+    /// with a tiny radius (found by review: `2^(−1100)` was a ball
+    /// `{0, 0, 0}` with sign 0).
+    #[test]
+    fn underflow_is_never_an_exact_zero() {
+        for b in [
+            DwBall::from_int_scaled(&Int::one(), 1100),
+            DwBall::from_rat(&Rat::dyadic(Int::from(3), 1100)),
+            DwBall::exact(1.0).mul_pow2(-1100),
+        ] {
+            assert_ne!(b.sign(), Some(0), "{b:?}");
+            assert!(
+                holds(&b, &Rat::dyadic(Int::one(), 1100))
+                    || b.ends().is_none()
+                    || b.sign().is_none()
+            );
+        }
+        let b = DwBall::from_int_scaled(&(&Int::one().shl(200) + &Int::one()), 1100);
+        let exact = Rat::from_int(&Int::one().shl(200) + &Int::one()).mul_pow2(-1100);
+        assert!(holds(&b, &exact));
+        let d = b.minus(&DwBall::exact(b.hi));
+        let d_exact = &exact - &Rat::from_f64_exact(b.hi).unwrap();
+        assert!(holds(&d, &d_exact));
+        for (x, want) in [
+            (d.times(&d), &d_exact * &d_exact),
+            (
+                d.times(&DwBall::exact(2f64.powi(-100))),
+                d_exact.mul_pow2(-100),
+            ),
+            (d.div(&DwBall::exact(2f64.powi(80))), d_exact.mul_pow2(-80)),
+        ] {
+            assert!(holds(&x, &want), "{x:?}");
+            assert_ne!(x.sign(), Some(0), "{x:?}");
+        }
     }
 
     #[test]

@@ -209,9 +209,6 @@ impl SignModel for SignProbe {
             slope_exp: shift + k * (n - 1).max(0),
         }
     }
-    /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
-    /// from one Horner pass, then scaled like the `f64` view: by shifts at
-    /// a dyadic `m` (the solver's case), by an enclosed division otherwise.
     /// Horner over the balls of `q·2^(−shift)` at an exact ball of `m`;
     /// `None` for a short `q` (below [`BALL_WORTH`]), whose exact Horner
     /// pass costs less than the balls' bookkeeping.
@@ -240,6 +237,9 @@ impl SignModel for SignProbe {
             slope_exp: shift + k * (n - 1).max(0),
         })
     }
+    /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
+    /// from one Horner pass, then scaled like the `f64` view: by shifts at
+    /// a dyadic `m` (the solver's case), by an enclosed division otherwise.
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
         if m.dyadic_exponent().is_some() {
             return self.exact_jet_at(m).enclose();

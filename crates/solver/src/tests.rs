@@ -340,3 +340,22 @@ proptest! {
         }
     }
 }
+
+/// A root below `f64`'s range (`α = √3·2^(−1100)`) and a quantity positive
+/// on its whole enclosure but whose value at `t = 0` is negative: a ball
+/// of the point `m` that flushed to 0 would decide with the sign at 0
+/// (found by review; the balls now refuse such points).
+#[test]
+fn ball_jets_below_the_f64_range_decide_nothing_false() {
+    let t = |k: u64| ZPoly::new(vec![Int::zero(), Int::one().shl(k)]);
+    // p = 2^2200·t² − 3, q = 2^1498·t³ + 2^1100·t − 1.
+    let p = &(&t(1100) * &t(1100)) + &ZPoly::from_i64s(&[-3]);
+    let q = &(&(&t(0) * &t(0)) * &t(1498)) + &(&t(1100) + &ZPoly::from_i64s(&[-1]));
+    let (lo, hi) = (pow2(1100), pow2(1099));
+    let mut roots = isolate(&p, &lo, &hi).unwrap();
+    let mut root = roots.next().expect("one root");
+    assert!(roots.next().is_none());
+    assert_eq!(q.sign_at(root.lo()), 1);
+    assert_eq!(q.sign_at(root.hi()), 1);
+    assert_eq!(root.sign_of(&q), 1);
+}
