@@ -180,6 +180,13 @@ impl DwBall {
         }
     }
 
+    /// A rational as a ball of radius 0, `None` when it has none (more
+    /// than 106 significant bits, a non-dyadic, or out of range).
+    pub fn exactly(x: &Rat) -> Option<DwBall> {
+        let b = DwBall::from_rat(x);
+        (b.rad == 0.0 && b.is_known()).then_some(b)
+    }
+
     /// The ball around an `f64` interval (the interval itself, rounded
     /// outwards).
     pub fn from_interval(iv: Interval) -> DwBall {

@@ -25,7 +25,7 @@
 use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::ZPoly;
-use ccd_solver::{ball_horner, BallJet, ExactJet, ScaledPoly, SignModel};
+use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, isobaric_weight, Quantity};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -208,19 +208,11 @@ impl ClosedForm {
                 return Some(*jets);
             }
         }
-        let x = DwBall::from_rat(m);
-        if x.rad != 0.0 || !x.is_known() {
-            return None;
-        }
-        let balls = self.f.balls.get_or_init(|| {
-            std::array::from_fn(|k| {
-                let p = &self.f.f.coeffs[k];
-                p.coeffs()
-                    .iter()
-                    .map(|c| DwBall::from_int_scaled(c, self.f.shift))
-                    .collect()
-            })
-        });
+        let x = DwBall::exactly(m)?;
+        let balls = self
+            .f
+            .balls
+            .get_or_init(|| std::array::from_fn(|k| ball_view(&self.f.f.coeffs[k], self.f.shift)));
         let jets: [Dual<DwBall>; 5] = std::array::from_fn(|k| ball_horner(&balls[k], &x));
         *self.f.last_ball.borrow_mut() = Some((m.clone(), jets));
         Some(jets)
@@ -294,11 +286,9 @@ impl SignModel for ClosedForm {
         // (isobaric_weight).
         let log2 = |b: &DwBall| (b.hi != 0.0).then(|| b.hi.abs().log2());
         // (power of λ, log2 |a_k|), highest power first.
-        let sizes: Vec<(i64, f64)> = (0..5)
-            .filter_map(|i| log2(&jets[i].v).map(|l| (4 - i as i64, l)))
-            .collect();
-        let e = match (sizes.first(), sizes.last()) {
-            (Some(&(k1, l1)), Some(&(k0, l0))) if k1 > k0 => {
+        let sizes = (0..5).filter_map(|i| log2(&jets[i].v).map(|l| (4 - i as i64, l)));
+        let e = match (sizes.clone().next(), sizes.clone().next_back()) {
+            (Some((k1, l1)), Some((k0, l0))) if k1 > k0 => {
                 ((l0 - l1) / (k1 - k0) as f64).round() as i64
             }
             _ => 0,
@@ -306,8 +296,7 @@ impl SignModel for ClosedForm {
         // Then 2^g brings the largest near 1 (the forms are homogeneous of
         // degree w: 2^(−g·w) undoes it).
         let top = sizes
-            .iter()
-            .map(|&(k, l)| l + (e * k) as f64)
+            .map(|(k, l)| l + (e * k) as f64)
             .fold(f64::NEG_INFINITY, f64::max);
         let g = if top.is_finite() {
             -top.round() as i64

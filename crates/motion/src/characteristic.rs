@@ -84,7 +84,7 @@ impl CharPoly {
             // do when f does).
             let small = a.quadric_small().zip(b.quadric_small());
             let f = small
-                .filter(|(qa, qb)| worth_small(small_sizes(&[qa, qb]), 4))
+                .filter(|(qa, qb)| worth_small(sizes(&[qa, qb]), 4))
                 .and_then(|(qa, qb)| lift(characteristic(&qa, &qb)));
             f.unwrap_or_else(|| {
                 let (qa, qb) = (a.quadric(), b.quadric());
@@ -145,19 +145,10 @@ fn lowered(m: &Mat4<ZPoly>) -> Mat4<SmallPoly> {
 }
 
 /// `(degree, bits)` of every entry of these matrices.
-fn sizes<'a>(mats: &'a [&Mat4<ZPoly>]) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
-    mats.iter()
-        .flat_map(|m| m.iter().flatten())
-        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
-}
-
-/// [`sizes`] of matrices in [`SmallPoly`].
-fn small_sizes<'a>(
-    mats: &'a [&Mat4<SmallPoly>],
+fn sizes<'a, P: IntegerPoly>(
+    mats: &'a [&Mat4<P>],
 ) -> impl Iterator<Item = (usize, u64)> + Clone + 'a {
-    mats.iter()
-        .flat_map(|m| m.iter().flatten())
-        .map(|e| (e.degree().unwrap_or(0), e.max_bits()))
+    mats.iter().flat_map(|m| m.iter().flatten()).map(P::size)
 }
 
 /// Whether `f` from matrices with entries of these `(degree, bits)`, a
@@ -247,32 +238,40 @@ fn coprime_basis(mut items: Vec<ZPoly>) -> Vec<ZPoly> {
     items
 }
 
-/// Exact division in `ℤ[u]`, for the normalisation's two polynomial types
-/// (exact [`ZPoly`], and [`SmallPoly`] whose steps may overflow).
-trait ExactDivision: RingOps {
+/// The normalisation's two integer polynomial types: exact [`ZPoly`], and
+/// [`SmallPoly`] whose steps may overflow.
+trait IntegerPoly: RingOps {
     /// `Some(Some(q))` if `self = q·d`, `Some(None)` if `d` does not
     /// divide `self`, `None` if this type cannot tell (an overflow).
     fn quotient(&self, d: &Self) -> Option<Option<Self>>;
+    /// `(degree, bits of the longest coefficient)`.
+    fn size(&self) -> (usize, u64);
 }
 
-impl ExactDivision for ZPoly {
+impl IntegerPoly for ZPoly {
     fn quotient(&self, d: &Self) -> Option<Option<Self>> {
         Some(self.div_exact(d))
     }
+    fn size(&self) -> (usize, u64) {
+        (self.degree().unwrap_or(0), self.max_bits())
+    }
 }
 
-impl ExactDivision for SmallPoly {
+impl IntegerPoly for SmallPoly {
     fn quotient(&self, d: &Self) -> Option<Option<Self>> {
         match self.div_exact(d) {
             None => Some(None),
             Some(q) => q.is_exact().then_some(Some(q)),
         }
     }
+    fn size(&self) -> (usize, u64) {
+        (self.degree().unwrap_or(0), self.max_bits())
+    }
 }
 
 /// How often `pi` divides `p` (`p ≠ 0`), and the cofactor `p/π^v`; `None`
 /// on an overflow.
-fn multiplicity<P: ExactDivision>(p: &P, pi: &P) -> Option<(usize, P)> {
+fn multiplicity<P: IntegerPoly>(p: &P, pi: &P) -> Option<(usize, P)> {
     let mut q = p.clone();
     let mut v = 0;
     while let Some(next) = q.quotient(pi)? {
@@ -290,15 +289,10 @@ enum Cofactor {
     Exact(ZPoly),
 }
 
-/// `c·π^e`, where `π^(−e)` divides `c` if `e < 0`; `None` on an overflow
-/// (a [`SmallPoly`] result must still be checked with `to_zpoly`).
-fn times_power<P: ExactDivision>(c: &P, pi: &P, e: i64) -> Option<P> {
-    let power = (0..e.unsigned_abs()).fold(P::one(), |p, _| p.times(pi));
-    if e >= 0 {
-        Some(c.times(&power))
-    } else {
-        c.quotient(&power)?
-    }
+/// `c·π^e` (a [`SmallPoly`] result must still be checked with
+/// `to_zpoly`).
+fn times_power<P: RingOps>(c: &P, pi: &P, e: u32) -> P {
+    (0..e).fold(c.clone(), |p, _| p.times(pi))
 }
 
 /// The exponents `α + β·k` (k = 0..4, low → high) minimising `α + 2β`
@@ -349,19 +343,14 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
         } else {
             pi
         };
-        // Each step in i128 when the numbers fit, else in ZPoly.
+        // v_k and the cofactor c_k/π^v_k, in i128 when the numbers fit,
+        // else in ZPoly.
         let small_pi = SmallPoly::from_zpoly(&pi);
-        let small: [Option<(SmallPoly, &SmallPoly)>; 5] = std::array::from_fn(|k| {
-            small_pi
-                .as_ref()
-                .and_then(|pi| Some((SmallPoly::from_zpoly(&c[k])?, pi)))
-        });
-        // v_k and the cofactor c_k/π^v_k, in i128 when the numbers fit.
         let split: [Option<(usize, Cofactor)>; 5] = std::array::from_fn(|k| {
             (!c[k].is_zero()).then(|| {
-                small[k]
+                small_pi
                     .as_ref()
-                    .and_then(|(ck, pi)| multiplicity(ck, *pi))
+                    .and_then(|pi| multiplicity(&SmallPoly::from_zpoly(&c[k])?, pi))
                     .map(|(v, q)| (v, Cofactor::Small(q)))
                     .unwrap_or_else(|| {
                         let (v, q) = multiplicity(&c[k], &pi).expect("ZPoly division is exact");
@@ -379,13 +368,13 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
             if e[k] == 0 {
                 continue;
             }
-            let total = *vk as i64 + e[k];
+            let total = (*vk as i64 + e[k]) as u32;
             c[k] = match cofactor {
                 Cofactor::Small(q) => small_pi
                     .as_ref()
-                    .and_then(|pi| times_power(q, pi, total)?.to_zpoly())
-                    .or_else(|| times_power(&q.to_zpoly()?, &pi, total)),
-                Cofactor::Exact(q) => times_power(q, &pi, total),
+                    .and_then(|pi| times_power(q, pi, total).to_zpoly())
+                    .or_else(|| Some(times_power(&q.to_zpoly()?, &pi, total))),
+                Cofactor::Exact(q) => Some(times_power(q, &pi, total)),
             }
             .expect("an exact cofactor times a power of π");
         }

@@ -230,8 +230,8 @@ static PRIMES: Mutex<Vec<NttPrime>> = Mutex::new(Vec::new());
 
 /// The first table primes, as [`next_prime`] finds them (a test checks
 /// it): a process needs no Miller–Rabin search for its first 48 primes
-/// (about 0.1M instructions a prime, paid once per process, i.e. per CLI
-/// run).
+/// (the search cost a CLI run forming `sr11` for Example 5.1 about 0.1M
+/// instructions, once per process).
 const FIRST: [NttPrime; 48] = [
     NttPrime {
         p: 0x3ffffffffeb00001,

@@ -24,7 +24,7 @@ mod root;
 mod scaled;
 
 pub use isolate::{RootIter, MAX_EXACT_WORK};
-pub use model::{ball_horner, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH};
+pub use model::{ball_horner, ball_view, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH};
 pub use root::RealRoot;
 pub use scaled::ScaledPoly;
 

@@ -87,6 +87,14 @@ pub fn ball_horner(coeffs: &[DwBall], x: &DwBall) -> Dual<DwBall> {
     Dual { v, d }
 }
 
+/// The coefficients of `p·2^(−shift)` as balls (low → high).
+pub fn ball_view(p: &ZPoly, shift: i64) -> Vec<DwBall> {
+    p.coeffs()
+        .iter()
+        .map(|c| DwBall::from_int_scaled(c, shift))
+        .collect()
+}
+
 /// Double-word enclosures of `σ·q(m)` and `σ·q′(m)` at a dyadic point
 /// ([`SignModel::ball_jet_at`]): the scale `σ` of [`ExactJet`], so that
 /// `value` holds `ExactJet::value·2^(−value_exp)` and `slope` holds
@@ -218,18 +226,9 @@ impl SignModel for SignProbe {
             return None;
         }
         let k = m.dyadic_exponent()? as i64;
-        let x = DwBall::from_rat(m);
-        if x.rad != 0.0 || !x.is_known() {
-            return None;
-        }
+        let x = DwBall::exactly(m)?;
         let shift = self.sq.shift();
-        let balls = self.balls.get_or_init(|| {
-            self.q
-                .coeffs()
-                .iter()
-                .map(|c| DwBall::from_int_scaled(c, shift))
-                .collect()
-        });
+        let balls = self.balls.get_or_init(|| ball_view(&self.q, shift));
         let jet = ball_horner(balls, &x);
         (jet.v.is_known() && jet.d.is_known()).then_some(BallJet {
             value: jet.v,

@@ -37,6 +37,11 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
         .max(neg_log2(w) + 2)
 }
 
+/// `1 ± 2^(−50)`: past the roundings of a product of a few `f64` factors
+/// (each off by at most `2^(−53)` relatively), upwards and downwards.
+const UP4: f64 = 1.0 + 4.0 * f64::EPSILON;
+const DOWN4: f64 = 1.0 - 4.0 * f64::EPSILON;
+
 /// What one round of Taylor tests from balls found
 /// ([`RealRoot::ball_round`]).
 enum BallRound {
@@ -355,9 +360,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
             dl.abs_lower().max(dh.abs_lower()),
         );
         // r²/2 rounded up and down (three roundings, and underflow).
-        let half_sq_up = r_up * r_up * 0.5 * (1.0 + 4.0 * f64::EPSILON) + f64::MIN_POSITIVE;
-        let half_sq_dn =
-            (r_dn * r_dn * 0.5 * (1.0 - 4.0 * f64::EPSILON) - f64::MIN_POSITIVE).max(0.0);
+        let half_sq_up = r_up * r_up * 0.5 * UP4 + f64::MIN_POSITIVE;
+        let half_sq_dn = (r_dn * r_dn * 0.5 * DOWN4 - f64::MIN_POSITIVE).max(0.0);
         let (l, h) = (
             jet.value.plus(&jet.slope.times(&dl)),
             jet.value.plus(&jet.slope.times(&dh)),
@@ -365,7 +369,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let remainder = DwBall {
             hi: 0.0,
             lo: 0.0,
-            rad: bound * half_sq_up * (1.0 + 4.0 * f64::EPSILON),
+            rad: bound * half_sq_up * UP4,
         };
         let at = |b: &DwBall| b.plus(&remainder).sign().filter(|s| *s != 0);
         if let (Some(sl), Some(sh)) = (at(&l), at(&h)) {
@@ -375,18 +379,14 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
         // Both exact tests open, proven from the balls' extremes.
         let (min_up, max_dn) = (l.upper().min(h.upper()), l.lower().max(h.lower()));
-        let rho_dn = bound * half_sq_dn * (1.0 - 4.0 * f64::EPSILON);
+        let rho_dn = bound * half_sq_dn * DOWN4;
         let taylor_open = min_up <= rho_dn && max_dn >= -rho_dn;
         // The f64 test's remainder ends, toward zero.
-        let r_lo = ((second.lo.min(0.0) * half_sq_dn) * (1.0 - 4.0 * f64::EPSILON)
-            + f64::MIN_POSITIVE)
-            .min(0.0);
-        let r_hi = ((second.hi.max(0.0) * half_sq_dn) * (1.0 - 4.0 * f64::EPSILON)
-            - f64::MIN_POSITIVE)
-            .max(0.0);
+        let r_lo = ((second.lo.min(0.0) * half_sq_dn) * DOWN4 + f64::MIN_POSITIVE).min(0.0);
+        let r_hi = ((second.hi.max(0.0) * half_sq_dn) * DOWN4 - f64::MIN_POSITIVE).max(0.0);
         let float_open = min_up <= -r_lo && max_dn >= -r_hi;
         // 2^(−960): far from where the exact value's f64 enclosure underflows.
-        let value_nonzero = jet.value.abs_lower() >= 1.0 / (1u128 << 120) as f64 / 2f64.powi(840);
+        let value_nonzero = jet.value.abs_lower() >= 2f64.powi(-960);
         (taylor_open && float_open).then_some(BallRound::Open { value_nonzero })
     }
 
