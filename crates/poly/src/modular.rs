@@ -19,6 +19,11 @@
 //!    `G` are associates, both primitive with positive leading coefficient:
 //!    `C = G`. A failed verification only means more primes are needed.
 //!
+//! The images may be taken of non-primitive inputs: at a prime not dividing
+//! their leading coefficients the contents are units modulo `p`, so the
+//! monic image gcd is that of the primitive parts. So a degree-0 image
+//! proves coprimality before any content is computed.
+//!
 //! Termination: all but finitely many primes are lucky, and after enough
 //! lucky primes the reconstruction equals `H`, is stable, and verifies.
 //!
@@ -157,11 +162,15 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     if da == 0 || db == 0 {
         return ZPoly::one();
     }
-    let (a, b) = (a.primitive_part(), b.primitive_part());
+    // The images are taken of `a` and `b` as given, at primes `p ∤ lc(a)·lc(b)`:
+    // then `p` divides neither content, so the monic `gcd(a mod p, b mod p)`
+    // is that of the primitive parts. Those (and `γ`) are formed only once
+    // an image is not constant: a coprime pair, the common case of a zero
+    // test, is proven by one prime without them.
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
-    let gamma = lca.gcd(lcb);
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
+    let mut primitive: Option<(ZPoly, ZPoly, Int)> = None;
     // The current reconstruction: its degree, coefficients and modulus.
     let mut best: Option<(usize, Vec<Int>, Int)> = None;
     for index in 0.. {
@@ -175,6 +184,14 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
         if d == 0 {
             return ZPoly::one();
         }
+        let (pa, pb, gamma) = primitive.get_or_insert_with(|| {
+            let (pa, pb) = (a.primitive_part(), b.primitive_part());
+            let gamma = pa
+                .leading()
+                .expect("nonzero")
+                .gcd(pb.leading().expect("nonzero"));
+            (pa, pb, gamma)
+        });
         // γ·monic(g), plain residues.
         let gamma_m = f.enter(gamma.mod_u64(f.p));
         let image: Vec<u64> = g.iter().map(|&x| f.leave(f.mul(x, gamma_m))).collect();
@@ -184,7 +201,7 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
                     continue;
                 }
                 let cand = ZPoly::new(h.clone()).primitive_part();
-                if a.div_exact(&cand).is_some() && b.div_exact(&cand).is_some() {
+                if pa.div_exact(&cand).is_some() && pb.div_exact(&cand).is_some() {
                     return cand;
                 }
             }
@@ -309,6 +326,17 @@ mod gcd_tests {
         let unlucky = ZPoly::new(vec![-(&p0 * &p0), Int::zero(), Int::one()]);
         assert!(!squarefree_by_prime(&unlucky));
         assert_eq!(unlucky.squarefree_part(), unlucky);
+    }
+
+    #[test]
+    fn contents_do_not_change_the_gcd() {
+        let (u, v, w) = (z(&[-1, 1]), z(&[2, 1]), z(&[3, 1]));
+        let a = (&u * &v).mul_int(&Int::from(6));
+        assert_eq!(a.gcd(&w.mul_int(&Int::from(-10))), ZPoly::one());
+        assert_eq!(a.gcd(&(&u * &w).mul_int(&Int::from(4))), u);
+        // A content divisible by the first prime: that prime is skipped.
+        let p0 = Int::from_u64(crate::prime::ntt_prime(0).p);
+        assert_eq!(a.mul_int(&p0).gcd(&(&v * &w).mul_int(&p0)), v);
     }
 
     #[test]
