@@ -41,26 +41,34 @@ fn trim(v: &mut Vec<u64>) {
     }
 }
 
-/// `a ← a mod b` in `F_p[t]` (Montgomery form), `b` nonzero and trimmed.
+/// `a ← c·(a mod b)` in `F_p[t]` (Montgomery form) for some nonzero
+/// constant `c`, `b` nonzero and trimmed: each step is `a ← lc(b)·a −
+/// top(a)·t^j·b`, with no inversion. A gcd only needs remainders up to a
+/// constant, and an inversion (Fermat: about 90 products) costs more than
+/// the second product per coefficient it saves until degree ~90.
 fn rem_in_place(a: &mut Vec<u64>, b: &[u64], f: &Fp) {
     let db = b.len() - 1;
-    let inv = f.inv(b[db]);
+    let lc = b[db];
     while a.len() > db {
         let top = a.pop().expect("a.len() > db >= 0");
         if top == 0 {
             continue;
         }
-        let q = f.mul(top, inv);
         let off = a.len() - db;
-        for (x, &y) in a[off..].iter_mut().zip(b) {
-            *x = f.sub(*x, f.mul(q, y));
+        let (low, high) = a.split_at_mut(off);
+        for x in low {
+            *x = f.mul(*x, lc);
+        }
+        for (x, &y) in high.iter_mut().zip(b) {
+            *x = f.sub(f.mul(*x, lc), f.mul(top, y));
         }
     }
     trim(a);
 }
 
 /// The monic gcd of two polynomials over `F_p` (Montgomery form in and out)
-/// by Euclid's algorithm; empty when both are zero.
+/// by Euclid's algorithm (remainders up to constants); empty when both are
+/// zero.
 pub(crate) fn gcd_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, f: &Fp) -> Vec<u64> {
     trim(&mut a);
     trim(&mut b);
