@@ -24,12 +24,17 @@
 
 use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_motion::CharPoly;
-use ccd_poly::ZPoly;
+use ccd_poly::{SmallPoly, ZPoly};
 use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
-use ccd_subres::{closed_form, isobaric_weight, Quantity};
+use ccd_subres::{closed_form, homogeneous_degree, isobaric_weight, Quantity};
 use std::cell::RefCell;
 use std::rc::Rc;
 use std::sync::OnceLock;
+
+/// Below `degree·bits` of this, a closed form over [`SmallPoly`] (`i128`)
+/// is tried first: its products of up to `deg f + 1` terms and the forms'
+/// constants (up to 27³) add well under the 26 bits left to 126.
+const SMALL_BITS: u64 = 100;
 
 /// Bits kept in front of the binary point of the largest scaled
 /// coefficient: products of four values stay far inside `f64`'s range.
@@ -82,10 +87,19 @@ impl Coefficients {
     }
 
     /// The closed form `q` (not [`Quantity::Var`]) as a polynomial, formed
-    /// once, with only the products it needs.
+    /// once, with only the products it needs: in `i128` ([`SmallPoly`],
+    /// which detects any overflow) when short inputs make its numbers
+    /// small (`|q| < 2^(degree·bits + a few)`, [`homogeneous_degree`]), else
+    /// over `Z[t]`.
     pub(crate) fn polynomial(&self, q: Quantity) -> &ZPoly {
-        self.polys[slot(q)]
-            .get_or_init(|| closed_form(&self.f.coeffs, q).expect("a closed form, not Var"))
+        self.polys[slot(q)].get_or_init(|| {
+            let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+            (homogeneous_degree(q) * bits <= SMALL_BITS)
+                .then(|| closed_form(&self.f.coeffs.each_ref().map(SmallPoly::lowered), q))
+                .flatten()
+                .and_then(|p| p.to_zpoly())
+                .unwrap_or_else(|| closed_form(&self.f.coeffs, q).expect("a closed form, not Var"))
+        })
     }
 
     /// The constant term `q(0)` and the nominal top coefficient (of
@@ -373,6 +387,24 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
+        /// The formed closed forms are those over `Z[t]`, whichever route
+        /// formed them: short coefficients (the `i128` route, up to its
+        /// limit: 16 bits for `sr0`, products of up to 8 terms) and long
+        /// ones.
+        #[test]
+        fn formed_polynomials_are_the_closed_forms(
+            raw in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 1..8), 5),
+            bits in prop_oneof![Just(8u64), Just(16), Just(25), Just(40), Just(90)],
+        ) {
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+                ZPoly::new(raw[k].iter().map(|&c| Int::from(c >> (64 - bits))).collect())
+            });
+            let f = Coefficients::new(CharPoly { coeffs: coeffs.clone() });
+            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                prop_assert_eq!(f.polynomial(q), &closed_form(&coeffs, q).expect("a polynomial"));
+            }
+        }
+
         /// Each model agrees with the polynomial it stands for: exact signs
         /// and values at points, and enclosures that hold the exact values.
         /// `tilt` scales the coefficient of `λ^k` by `2^(tilt·k)` (or, when

@@ -202,6 +202,29 @@ pub fn isobaric_weight(q: Quantity) -> u64 {
     }
 }
 
+/// The degree of a closed form as a homogeneous polynomial in the
+/// quartic's five coefficients (`Var`: 0): `closed_form(s·f) =
+/// s^degree · closed_form(f)`. Hence `|q| < 2^(degree·bits + slack)` for
+/// coefficients of at most `bits` bits, a cheap size estimate.
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_subres::{closed_form, homogeneous_degree, Quantity};
+/// let f = [3, -7, 11, 5, -13].map(Int::from);
+/// let g = f.clone().map(|x| &x * &Int::from(2));
+/// let q = Quantity::Sr0;
+/// let scaled = closed_form(&f, q).unwrap().shl(homogeneous_degree(q));
+/// assert_eq!(closed_form(&g, q).unwrap(), scaled);
+/// ```
+pub fn homogeneous_degree(q: Quantity) -> u64 {
+    match q {
+        Quantity::Sr22 | Quantity::Sr20 => 2,
+        Quantity::Sr11 | Quantity::Sr10 => 4,
+        Quantity::Sr0 => 6,
+        Quantity::Var => 0,
+    }
+}
+
 /// The scaled coefficients `ā = 12e, b̄ = −3a, c̄ = 2b, d̄ = −3c, ē = 12d`
 /// and the intermediate quantities of the closed forms built from them.
 struct Barred<R> {
@@ -304,8 +327,6 @@ mod tests {
 
     /// closed form = K · generic determinant, for monic quartics.
     const K: [i64; 5] = [3, 9, 324, 108, 11664];
-    /// Homogeneous degree of each closed form in (e, a, b, c, d).
-    const DEG: [u32; 5] = [2, 2, 4, 4, 6];
 
     fn closed<R: Ring>(f: &[R; 5]) -> [R; 5] {
         let inv = closed_forms(f);
@@ -364,7 +385,8 @@ mod tests {
             let (cl, ge, ge_monic) = (closed(&f), generic(&f), generic(&monic));
             for q in 0..5 {
                 let k = Rat::from(K[q]);
-                prop_assert_eq!(&cl[q], &k.times(&pow(&e, DEG[q])).times(&ge_monic[q]));
+                let deg = homogeneous_degree(QS[q]) as u32;
+                prop_assert_eq!(&cl[q], &k.times(&pow(&e, deg)).times(&ge_monic[q]));
                 prop_assert_eq!(&e.times(&cl[q]), &k.times(&ge[q]));
             }
         }

@@ -31,7 +31,9 @@ mod det;
 pub mod fixtures;
 mod habicht;
 
-pub use closed_forms::{closed_form, closed_forms, isobaric_weight, Quantity, QuarticInvariants};
+pub use closed_forms::{
+    closed_form, closed_forms, homogeneous_degree, isobaric_weight, Quantity, QuarticInvariants,
+};
 pub use det::determinant;
 pub use habicht::{
     derivative, signed_subresultant, signed_subresultants, subresultants_with_derivative,
