@@ -322,7 +322,12 @@ impl Oracle for Exact<'_> {
             });
         }
         let f = Rc::new(Coefficients::new(f));
-        *self.sample.borrow_mut() = None;
+        // A sample read before (the state at t0 of a first-contact query)
+        // stays valid: its values are those of f there up to a positive
+        // factor and a positive rescaling of λ (the early f is this f; the
+        // placements' quadrics are positive multiples of A and B), which
+        // keep every sign it answers (Theorem 3.10's signs, the
+        // normalisation's invariants; `characteristic` module docs).
         // sr0's roots from its certified f64 Bernstein coefficients when
         // the filter proves sr0(1/2) ≠ 0 (crate::signs); otherwise sr0 is
         // formed.
@@ -423,7 +428,82 @@ impl Oracle for Exact<'_> {
 mod tests {
     use super::Sample;
     use ccd_arith::{Int, Rat};
+    use ccd_motion::{placed_quadric, Bezier, Body, CharPoly, Motion};
+    use ccd_quadric::characteristic;
     use ccd_subres::{closed_forms, Quantity};
+
+    /// Every sign a sample answers.
+    fn sample_signs(at: &Rat, values: [Int; 5]) -> Vec<i32> {
+        let mut s = Sample::new(at.clone(), values);
+        let mut out: Vec<i32> = [
+            Quantity::Sr22,
+            Quantity::Sr20,
+            Quantity::Sr11,
+            Quantity::Sr10,
+            Quantity::Sr0,
+        ]
+        .into_iter()
+        .map(|q| s.sign(q))
+        .collect();
+        out.extend(s.values.iter().map(Int::signum));
+        out
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// A sample read off the placements' quadrics (a first-contact
+        /// query's state at t0 before the set-up) answers every sign as
+        /// the set-up `f` does at the same point, so `prepare` keeps it:
+        /// random static or translating pairs of every orientation, long
+        /// decimal numbers, samples at the ends and inside the span, and
+        /// grazing pairs (B's centre passing at distance r_A + r_B of A's
+        /// for spheres).
+        #[test]
+        fn placements_sample_has_the_signs_of_f(
+            quats in proptest::collection::vec(-9i64..10, 8),
+            radii in proptest::collection::vec((1i64..5000, 0u32..4), 6),
+            points in proptest::collection::vec((-100_000i64..100_000, 0u32..5), 9),
+            at in (0i64..9, 1i64..9),
+            graze in proptest::bool::ANY,
+        ) {
+            let dec = |(n, e): (i64, u32)| Rat::from_frac(n, 10i64.pow(e));
+            let quat = |k: usize| {
+                let mut q: [Rat; 4] = std::array::from_fn(|i| Rat::from(quats[4 * k + i]));
+                if q.iter().all(Rat::is_zero) {
+                    q[0] = Rat::one();
+                }
+                q
+            };
+            let radius = |k: usize| -> [Rat; 3] {
+                std::array::from_fn(|i| {
+                    let r = dec(radii[3 * k + i]);
+                    if graze { dec(radii[0]) } else { r }
+                })
+            };
+            let point = |p: usize| -> [Rat; 3] { std::array::from_fn(|i| dec(points[3 * p + i])) };
+            let a = Body { radii: radius(0), motion: Motion::Static { center: point(0), orientation: quat(0) } };
+            let mut end = point(2);
+            if graze {
+                // B ends where two equal spheres touch.
+                end = [&point(0)[0] + &(&dec(radii[0]) * &Rat::from(2)), point(0)[1].clone(), point(0)[2].clone()];
+            }
+            let b = Body {
+                radii: radius(1),
+                motion: Motion::Translation {
+                    center: Bezier { points: vec![point(1), end], weights: None },
+                    orientation: quat(1),
+                },
+            };
+            let span = [Rat::zero(), Rat::one()];
+            let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
+            let f = CharPoly::from_placed(&pa, &pb);
+            let u = Rat::from_frac(at.0.min(at.1), at.1);
+            for u in [Rat::zero(), Rat::one(), u] {
+                let direct = characteristic(&pa.quadric_at(&u), &pb.quadric_at(&u));
+                proptest::prop_assert_eq!(sample_signs(&u, direct), sample_signs(&u, f.at_scaled(&u)), "at {}", u);
+            }
+        }
+    }
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
