@@ -358,6 +358,13 @@ impl SignModel for ClosedForm {
             && (first.is_zero() || first.is_divisible_by(x.numer()))
     }
 
+    /// The nominal top coefficient when it is nonzero (then it is `q`'s
+    /// leading coefficient).
+    fn root_denominators(&self) -> Option<Int> {
+        let (_, last) = self.f.extremes(self.q);
+        (!last.is_zero()).then(|| last.abs())
+    }
+
     /// The closed form of the values `b^n·f_k(a/b)` at `x = a/b`
     /// ([`CharPoly::at_scaled`], no derivatives; `b^(nw) > 0` does not
     /// change the sign), or of the last point's jets when `x` is that point.

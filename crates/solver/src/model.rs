@@ -162,6 +162,12 @@ pub trait SignModel {
     fn admits_root_at(&self, _x: &Rat) -> bool {
         true
     }
+    /// A positive integer `L` that the denominator of every rational root
+    /// of `q` (in lowest terms) divides: `|lc(q)|` by the rational root
+    /// theorem. `None` (the default, always safe) when unknown cheaply.
+    fn root_denominators(&self) -> Option<Int> {
+        None
+    }
     /// `q` exactly.
     fn exact(&self) -> &ZPoly;
 }
@@ -190,6 +196,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     }
     fn admits_root_at(&self, x: &Rat) -> bool {
         (**self).admits_root_at(x)
+    }
+    fn root_denominators(&self) -> Option<Int> {
+        (**self).root_denominators()
     }
     fn exact(&self) -> &ZPoly {
         (**self).exact()
@@ -260,6 +269,9 @@ impl SignModel for SignProbe {
     }
     fn admits_root_at(&self, x: &Rat) -> bool {
         self.q.admits_rational_root(x)
+    }
+    fn root_denominators(&self) -> Option<Int> {
+        self.q.leading().map(Int::abs)
     }
     fn exact(&self) -> &ZPoly {
         &self.q

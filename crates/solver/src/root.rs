@@ -398,7 +398,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
         self.narrow_to(max_width);
-        if self.sign_lo != 0 {
+        if self.sign_lo != 0 && self.may_hold_rational_root() {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
                 && s != self.hi
@@ -410,6 +410,29 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 self.sign_lo = 0;
             }
         }
+    }
+
+    /// Whether the open enclosure may hold a rational root of the model:
+    /// every one is `k/L` for an integer `k` and the model's
+    /// [`SignModel::root_denominators`] `L`, so none is inside when no
+    /// integer lies strictly between `lo·L` and `hi·L` (two products and
+    /// floors, instead of the continued fraction of `Rat::simplest_in`).
+    fn may_hold_rational_root(&self) -> bool {
+        let Some(l) = self.base.root_denominators() else {
+            return true;
+        };
+        // L·w ≥ 2^(bits L − 1 + bits num w − 1 − bits den w) ≥ 2: then an
+        // integer is strictly inside whatever the ends (the usual case when
+        // L is long), with no product formed.
+        let w = self.width();
+        let log2_lw = (l.bits() + w.numer().bits()) as i64 - w.denom().bits() as i64 - 2;
+        if log2_lw >= 1 {
+            return true;
+        }
+        let l = Rat::from_int(l);
+        // The least integer above lo·L.
+        let first = &(&self.lo * &l).floor() + &Int::one();
+        Rat::from_int(first) < &self.hi * &l
     }
 
     /// [`RealRoot::refine_to`] without the final rational-root test: what

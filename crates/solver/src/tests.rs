@@ -97,6 +97,35 @@ proptest! {
     /// Distinct rational roots with multiplicities, times an irreducible
     /// quadratic: isolation finds exactly the distinct roots in [0, 1], in
     /// order, each enclosed.
+    /// Rational roots off every split point come out exact after
+    /// refinement (the simplest-rational test, behind the rational root
+    /// theorem's screen `k/L`), whatever the leading coefficient's extra
+    /// factor `k`.
+    #[test]
+    fn rational_roots_refine_to_themselves(
+        raw in proptest::collection::vec((1i64..=500, 1i64..=500), 1..4),
+        k in 1i64..1_000_000, shift in 1i64..7,
+    ) {
+        let mut roots: Vec<Rat> = Vec::new();
+        for (p, q) in raw {
+            let r = Rat::from_frac(p.min(2 * q), 2 * q + 1);
+            if !roots.contains(&r) {
+                roots.push(r);
+            }
+        }
+        roots.sort();
+        let linear = |r: &Rat| ZPoly::new(vec![-r.numer().clone(), r.denom().clone()]);
+        let poly = roots
+            .iter()
+            .fold(ZPoly::from_i64s(&[shift * k, 0, k]), |acc, r| &acc * &linear(r));
+        let found = all_roots(&poly, &Rat::zero(), &Rat::one());
+        prop_assert_eq!(found.len(), roots.len());
+        for (mut f, r) in found.into_iter().zip(&roots) {
+            f.refine_to(&Rat::from_frac(1, 1 << 40));
+            prop_assert_eq!(f.exact_value(), Some(r));
+        }
+    }
+
     #[test]
     fn isolates_constructed_roots(raw in proptest::collection::vec((0i64..=60, 1i64..=60, 1u32..=3), 1..7), shift in 1i64..5) {
         let mut roots: Vec<(Rat, u32)> = Vec::new();
