@@ -51,9 +51,17 @@ impl SmallInt {
         let (Some(a), Some(b)) = (self.exact(), o.exact()) else {
             return SmallInt(OVERFLOW);
         };
-        // |a|, |b| < 2^127: so is their gcd.
+        // |a|, |b| < 2^127: so is their gcd. Machine words once both fit
+        // (an i128 remainder is a library call).
         let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
         while b != 0 {
+            if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+                let (mut x, mut y) = (x, y);
+                while y != 0 {
+                    (x, y) = (y, x % y);
+                }
+                return SmallInt(i128::from(x));
+            }
             (a, b) = (b, a % b);
         }
         SmallInt(a as i128)
@@ -126,8 +134,11 @@ impl RingOps for SmallInt {
 impl Ring for SmallInt {
     /// Exact division; a divisor that does not divide (or zero) overflows.
     fn div_exact(&self, o: &Self) -> Self {
-        self.zip(*o, |a, b| {
-            (a.checked_rem(b)? == 0).then(|| a.checked_div(b))?
+        self.zip(*o, |a, b| match (i64::try_from(a), i64::try_from(b)) {
+            // Machine words when both fit (an i128 division is a library
+            // call) and neither a zero divisor nor i64::MIN / −1 can occur.
+            (Ok(x), Ok(y)) if y != 0 && y != -1 => (x % y == 0).then(|| i128::from(x / y)),
+            _ => (a.checked_rem(b)? == 0).then(|| a.checked_div(b))?,
         })
     }
 }
