@@ -338,8 +338,7 @@ impl Oracle for Exact<'_> {
 
     /// `t0 + u·(t1 − t0)`.
     fn time(&self, u: &Rat) -> Rat {
-        let [t0, t1] = &self.scene.span;
-        t0 + &(u * &(t1 - t0))
+        ccd_algorithm::time_on(&self.scene.span, u)
     }
 
     fn signs<'a>(&'a self, at: At<'a, ExactRoot>, _level: usize) -> Box<dyn Signs + 'a> {
