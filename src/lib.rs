@@ -113,11 +113,15 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
             ccd_algorithm::run(ccd_exact_arith::Exact::new(scene, options.digits)?, options)
         }
         Arithmetic::Float => {
-            let (pa, pb) = (
-                ccd_motion::placed_quadric(a, span).map_err(|e| CcdError::motion("a", e))?,
-                ccd_motion::placed_quadric(b, span).map_err(|e| CcdError::motion("b", e))?,
-            );
-            let p = ccd_float::prepare(&ccd_motion::CharPoly::from_placed(&pa, &pb));
+            // A static pair's f straight from the scene (the same polynomial).
+            let f = match ccd_motion::CharPoly::of_static(a, b) {
+                Some(f) => f,
+                None => ccd_motion::CharPoly::from_placed(
+                    &ccd_motion::placed_quadric(a, span).map_err(|e| CcdError::motion("a", e))?,
+                    &ccd_motion::placed_quadric(b, span).map_err(|e| CcdError::motion("b", e))?,
+                ),
+            };
+            let p = ccd_float::prepare(&f);
             ccd_algorithm::run(ccd_float::Float::new(&p, span, Some((a, b))), options)
         }
     }

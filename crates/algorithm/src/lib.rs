@@ -30,5 +30,5 @@ pub use assemble::sample_between;
 pub use decide::{possible_with, Possible, SignSet, Signs, VarSet};
 pub use error::CcdError;
 pub use options::{Arithmetic, Options};
-pub use oracle::{At, Candidates, Decided, Found, Item, Oracle, Vanishing};
+pub use oracle::{time_on, At, Candidates, Decided, Found, Item, Oracle, Vanishing};
 pub use run::{run, state_at};

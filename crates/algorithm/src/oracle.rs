@@ -81,6 +81,20 @@ pub enum Item {
     Gap(ccd_timeline::Gap),
 }
 
+/// The time `t0 + u·(t1 − t0)` of the parameter `u ∈ [0, 1]` on the span
+/// `[t0, t1]` (the rational paths' [`Oracle::time`]); the ends `u = 0, 1`,
+/// which every timeline has, without arithmetic.
+pub fn time_on(span: &[Rat; 2], u: &Rat) -> Rat {
+    let [t0, t1] = span;
+    if u.is_zero() {
+        t0.clone()
+    } else if u.is_integer() && u.numer().is_one() {
+        t1.clone()
+    } else {
+        t0 + &(u * &(t1 - t0))
+    }
+}
+
 /// The questions Algorithm 1 ([`crate::run`]) asks, answered by one
 /// arithmetic: exact (`ccd-exact-arith`, certified), float (`ccd-float`,
 /// not certified) or interval (`ccd-interval`, certified where its

@@ -29,6 +29,7 @@ mod int;
 mod interval;
 mod rat;
 mod ring;
+mod small;
 
 pub use approx::Approx;
 pub use convert::NotFinite;
@@ -39,6 +40,7 @@ pub use interval::Interval;
 pub use rat::text::{excerpt, ParseRatError};
 pub use rat::Rat;
 pub use ring::{Ring, RingOps};
+pub use small::SmallInt;
 
 // The big-integer kernel of this build, whose functions `Int` wraps.
 #[cfg(all(feature = "dashu", not(any(feature = "gmp", feature = "num-kernel"))))]

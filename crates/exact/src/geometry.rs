@@ -56,8 +56,7 @@ impl<'a> Bodies<'a> {
 
     /// `t0 + u·(t1 − t0)`.
     fn time(&self, u: &Rat) -> Rat {
-        let [t0, t1] = &self.scene.span;
-        t0 + &(u * &(t1 - t0))
+        ccd_algorithm::time_on(&self.scene.span, u)
     }
 
     /// The point and normal exactly, at a rational contact instant `u`

@@ -16,7 +16,7 @@ use ccd_scene::Scene;
 use ccd_solver::{RealRoot, RootIter, SignModel};
 use ccd_subres::{closed_forms, Quantity, QuarticInvariants};
 use ccd_timeline::{Geometry, Instant, Path, State, Stats};
-use std::cell::{Cell, RefCell};
+use std::cell::{Cell, OnceCell, RefCell};
 use std::rc::Rc;
 
 /// The largest closed form the exact path forms, in bits (degree times
@@ -127,7 +127,11 @@ impl Sample {
 /// The exact arithmetic over a rational scene, in `u ∈ [0, 1]`.
 pub struct Exact<'s> {
     scene: &'s Scene,
-    bodies: Bodies<'s>,
+    digits: u32,
+    /// The placements and what the contact geometry needs, formed in
+    /// [`Exact::new`] (which validates the motions) or, for a static pair,
+    /// only when a contact's geometry is asked for.
+    bodies: OnceCell<Bodies<'s>>,
     unit: [Rat; 2],
     /// `10^−digits`, the width of a reported enclosure in `u`.
     width: Rat,
@@ -141,29 +145,57 @@ pub struct Exact<'s> {
     /// The last sample's closed forms and coefficient signs.
     sample: RefCell<Option<Sample>>,
     /// `f(λ; u)` formed before [`Oracle::prepare`] to read a sample off it,
-    /// when that is cheaper than the placements (bodies that never turn).
+    /// when that is cheaper than the placements (bodies that never turn),
+    /// and from the start for a static pair.
     early: RefCell<Option<CharPoly>>,
 }
 
+/// The placements of both bodies (validated exactly on the span).
+fn placed_bodies(scene: &Scene, digits: u32) -> Result<Bodies<'_>, CcdError> {
+    let a = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
+    let b = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+    Ok(Bodies::new(scene, a, b, digits))
+}
+
 impl<'s> Exact<'s> {
-    /// The placements of both bodies (validated exactly on the span).
+    /// The placements of both bodies (validated exactly on the span); for
+    /// a static pair `f(λ)` straight from the scene instead
+    /// ([`CharPoly::of_static`]: the same polynomial), the placements left
+    /// until a contact's geometry needs them.
     ///
     /// # Errors
     ///
     /// [`CcdError::Motion`] when a motion degenerates on the span.
     pub fn new(scene: &'s Scene, digits: u32) -> Result<Exact<'s>, CcdError> {
-        let a = placed_quadric(&scene.a, &scene.span).map_err(|e| CcdError::motion("a", e))?;
-        let b = placed_quadric(&scene.b, &scene.span).map_err(|e| CcdError::motion("b", e))?;
+        let f = CharPoly::of_static(&scene.a, &scene.b);
+        Exact::with(scene, digits, f)
+    }
+
+    /// [`Exact::new`] with `f` formed in advance (a static pair) or not.
+    fn with(scene: &'s Scene, digits: u32, f: Option<CharPoly>) -> Result<Exact<'s>, CcdError> {
+        let bodies = match f {
+            Some(_) => OnceCell::new(),
+            None => OnceCell::from(placed_bodies(scene, digits)?),
+        };
         Ok(Exact {
             scene,
-            bodies: Bodies::new(scene, a, b, digits),
+            digits,
+            bodies,
             unit: [Rat::zero(), Rat::one()],
             width: Rat::new(Int::one(), Int::pow10(digits)).expect("nonzero denominator"),
             f: None,
             formed: Cell::new(false),
             filtered: false,
             sample: RefCell::new(None),
-            early: RefCell::new(None),
+            early: RefCell::new(f),
+        })
+    }
+
+    /// The placements (formed on first need for a static pair, whose
+    /// placement [`Exact::new`] skipped: a constant one never degenerates).
+    fn bodies(&self) -> &Bodies<'s> {
+        self.bodies.get_or_init(|| {
+            placed_bodies(self.scene, self.digits).expect("a static placement never degenerates")
         })
     }
 
@@ -180,23 +212,39 @@ impl<'s> Exact<'s> {
     /// and [`Oracle::prepare`] reuses it), else straight from the placements
     /// (long numbers: `f` may cost seconds, and the query may stop at `t0`).
     fn values_at(&self, u: &Rat) -> [Int; 5] {
-        match &self.f {
-            Some(f) => f.char_poly().at_scaled(u),
-            None if !(self.bodies.a.turns() || self.bodies.b.turns())
-                && self.bodies.a.bits() + self.bodies.b.bits() <= EARLY_F_BITS =>
-            {
-                self.early
-                    .borrow_mut()
-                    .get_or_insert_with(|| self.char_poly())
-                    .at_scaled(u)
+        if let Some(f) = &self.f {
+            return f.char_poly().at_scaled(u);
+        }
+        let mut early = self.early.borrow_mut();
+        if early.is_none() {
+            let (a, b) = (&self.bodies().a, &self.bodies().b);
+            if !(a.turns() || b.turns()) && a.bits() + b.bits() <= EARLY_F_BITS {
+                *early = Some(self.char_poly());
             }
-            None => characteristic(&self.bodies.a.quadric_at(u), &self.bodies.b.quadric_at(u)),
+        }
+        match &*early {
+            Some(f) => f.at_scaled(u),
+            None => characteristic(
+                &self.bodies().a.quadric_at(u),
+                &self.bodies().b.quadric_at(u),
+            ),
         }
     }
 
     /// `f(λ; u)` of the placements ([`CharPoly::from_placed`]).
     fn char_poly(&self) -> CharPoly {
-        CharPoly::from_placed(&self.bodies.a, &self.bodies.b)
+        CharPoly::from_placed(&self.bodies().a, &self.bodies().b)
+    }
+
+    /// `deg sr0` (`None` when `sr0 ≡ 0`) without forming `sr0`: `0` for a
+    /// constant `f` (a static pair) whose `sr0` the filter proved nonzero,
+    /// else [`Coefficients::sr0_degree`].
+    fn sr0_degree(&self, f: &Coefficients) -> Option<usize> {
+        if self.filtered && f.char_poly().degree() == 0 {
+            Some(0)
+        } else {
+            f.sr0_degree()
+        }
     }
 }
 
@@ -290,8 +338,7 @@ impl Oracle for Exact<'_> {
 
     /// `t0 + u·(t1 − t0)`.
     fn time(&self, u: &Rat) -> Rat {
-        let [t0, t1] = &self.scene.span;
-        t0 + &(u * &(t1 - t0))
+        ccd_algorithm::time_on(&self.scene.span, u)
     }
 
     fn signs<'a>(&'a self, at: At<'a, ExactRoot>, _level: usize) -> Box<dyn Signs + 'a> {
@@ -361,7 +408,7 @@ impl Oracle for Exact<'_> {
             // proved nonzero at 1/2, so it has no roots.
             if f.char_poly().degree() == 0 {
                 return Some(Candidates {
-                    degree: f.sr0_degree(),
+                    degree: self.sr0_degree(f),
                     roots: Box::new(std::iter::empty()),
                 });
             }
@@ -399,11 +446,11 @@ impl Oracle for Exact<'_> {
     }
 
     fn geometry(&self, r: &mut ExactRoot, zeros: &[Quantity], _instant: &Instant) -> Geometry {
-        each!(r, x => self.bodies.exact(x, self.coefficients(), zeros))
+        each!(r, x => self.bodies().exact(x, self.coefficients(), zeros))
     }
 
     fn geometry_at(&self, u: &Rat, _zeros: &[Quantity]) -> Geometry {
-        self.bodies.at_touch(u)
+        self.bodies().at_touch(u)
     }
 
     fn touch_between_contacts(&self, u: &Rat, _d: Decided) -> Result<Decided, CcdError> {
@@ -419,17 +466,20 @@ impl Oracle for Exact<'_> {
         stats.deg_sr0 = if self.formed.get() {
             f.polynomial(Quantity::Sr0).degree()
         } else {
-            f.sr0_degree()
+            self.sr0_degree(f)
         };
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::Sample;
+    use super::{Exact, Sample};
+    use crate::signs::Coefficients;
+    use ccd_algorithm::Options;
     use ccd_arith::{Int, Rat};
-    use ccd_motion::{placed_quadric, Bezier, Body, CharPoly, Motion};
-    use ccd_quadric::characteristic;
+    use ccd_motion::{placed_quadric, Bezier, Body, CharPoly, Motion, Quat, Vec3};
+    use ccd_quadric::{characteristic, norm2, rotation_numerator};
+    use ccd_scene::Scene;
     use ccd_subres::{closed_forms, Quantity};
 
     /// Every sign a sample answers.
@@ -501,6 +551,100 @@ mod tests {
             for u in [Rat::zero(), Rat::one(), u] {
                 let direct = characteristic(&pa.quadric_at(&u), &pb.quadric_at(&u));
                 proptest::prop_assert_eq!(sample_signs(&u, direct), sample_signs(&u, f.at_scaled(&u)), "at {}", u);
+            }
+        }
+    }
+
+    /// `R(q)·v = M(q)·v / |q|²`.
+    fn rotate(q: &Quat, v: &Vec3) -> Vec3 {
+        let (m, n) = (rotation_numerator(q), norm2(q));
+        std::array::from_fn(|i| {
+            let s = (0..3).fold(Rat::zero(), |s, j| &s + &(&m[i][j] * &v[j]));
+            &s / &n
+        })
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
+        /// A static pair gets the very outcome from the lean route (`f`
+        /// straight from the scene, no placements until a contact's
+        /// geometry needs them) as from the general one (placements, then
+        /// `f` through them), in full and first-contact queries, and the
+        /// very `f`: random radii, unit (`r²/|r|²`) and non-unit
+        /// quaternions, short and long rationals (up to about 100 digits),
+        /// bodies apart or overlapping at random, and constructions that
+        /// touch (externally, tangent along A's first axis, then turned and
+        /// moved as a whole; ellipsoids and spheres), overlap slightly, or
+        /// coincide.
+        #[test]
+        fn static_pairs_take_the_lean_route_to_the_same_outcome(
+            radii in proptest::collection::vec((1i64..40, 1i64..9), 6),
+            r in proptest::collection::vec(-6i64..7, 4),
+            unit in proptest::bool::ANY,
+            centres in proptest::collection::vec((-60i64..60, 1i64..12), 6),
+            long in 0u32..60,
+            kind in 0usize..5,
+            span in (-5i64..5, 1i64..7),
+        ) {
+            // A long rational: n/d times 3^long / 7^(long/2).
+            let scale = Rat::new(Int::from(3).pow(long), Int::from(7).pow(long / 2)).expect("nonzero");
+            let rat = |(n, d): (i64, i64)| &Rat::from_frac(n, d) * &scale;
+            let mut r: Quat = std::array::from_fn(|i| Rat::from(r[i]));
+            if r.iter().all(Rat::is_zero) {
+                r[0] = Rat::one();
+            }
+            // r²/|r|² is a unit quaternion.
+            let q: Quat = if unit {
+                let n = norm2(&r);
+                let [w, x, y, z] = &r;
+                let two_w = &Rat::from(2) * w;
+                let square = [&(w * w) - &(&(&(x * x) + &(y * y)) + &(z * z)), &two_w * x, &two_w * y, &two_w * z];
+                square.map(|c| &c / &n)
+            } else {
+                r.each_ref().map(|c| &(c * &scale) / &Rat::from(7))
+            };
+            // Kind 4: spheres that touch (Theorem 3.10's case (2b)).
+            let axis = |i: usize| if kind == 4 { 0 } else { i };
+            let ra: Vec3 = std::array::from_fn(|i| rat(radii[axis(i)]));
+            let rb: Vec3 = std::array::from_fn(|i| rat(radii[3 + axis(i)]));
+            let ca: Vec3 = std::array::from_fn(|i| rat(centres[i]));
+            let cb: Vec3 = match kind {
+                // Tangent at A's first axis (kind 1), or overlapping by a
+                // little (kind 2), turned by q and moved to ca.
+                1 | 2 | 4 => {
+                    let gap = if kind != 2 { Rat::zero() } else { Rat::from_frac(1, 1000) };
+                    let offset = [&(&ra[0] + &rb[0]) - &gap, Rat::zero(), Rat::zero()];
+                    let turned = rotate(&q, &offset);
+                    std::array::from_fn(|i| &ca[i] + &turned[i])
+                }
+                // The same place (the same body when the radii agree).
+                3 => ca.clone(),
+                _ => std::array::from_fn(|i| rat(centres[3 + i])),
+            };
+            let body = |radii: Vec3, center: Vec3| Body {
+                radii,
+                motion: Motion::Static { center, orientation: q.clone() },
+            };
+            let t0 = Rat::from(span.0);
+            let scene = Scene { span: [t0.clone(), &t0 + &Rat::from(span.1)], a: body(ra, ca), b: body(rb, cb) };
+            proptest::prop_assert!(scene.validate().is_ok());
+            let (pa, pb) = (
+                placed_quadric(&scene.a, &scene.span).expect("static"),
+                placed_quadric(&scene.b, &scene.span).expect("static"),
+            );
+            let f = CharPoly::of_static(&scene.a, &scene.b);
+            proptest::prop_assert_eq!(&f, &Some(CharPoly::from_placed(&pa, &pb)));
+            // The degree of sr0 read without forming it is its degree.
+            let sr0_degree = Coefficients::new(f.expect("static")).sr0_degree();
+            for first_contact_only in [false, true] {
+                let opts = Options { first_contact_only, ..Options::default() };
+                let lean = ccd_algorithm::run(Exact::new(&scene, opts.digits).expect("static"), &opts);
+                let general = ccd_algorithm::run(Exact::with(&scene, opts.digits, None).expect("static"), &opts);
+                proptest::prop_assert_eq!(format!("{lean:?}"), format!("{general:?}"));
+                let stats = lean.expect("a static pair's query").stats;
+                if stats.branch.is_some() {
+                    proptest::prop_assert_eq!(stats.deg_sr0, sr0_degree);
+                }
             }
         }
     }

@@ -134,8 +134,7 @@ impl Oracle for Float<'_> {
     }
 
     fn time(&self, u: &Rat) -> Rat {
-        let [t0, t1] = &self.span;
-        t0 + &(u * &(t1 - t0))
+        ccd_algorithm::time_on(&self.span, u)
     }
 
     /// Signs within [`TOL_SIGN`] of zero read as zero.

@@ -23,10 +23,11 @@
 //! integer form of a rotation (`R = M(q)/|q|²`).
 
 use crate::centred::centred_characteristic;
+use crate::curve::Integer;
 use crate::error::MotionError;
-use crate::kinds::Body;
-use crate::matrices::{placed_quadric, PlacedQuadric};
-use ccd_arith::{Int, Rat, RingOps};
+use crate::kinds::{Body, Motion, Quat, Vec3};
+use crate::matrices::{placed_quadric, static_quadric, PlacedQuadric};
+use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
@@ -110,6 +111,39 @@ impl CharPoly {
         }
     }
 
+    /// `f(λ)` of two static bodies (both [`Motion::Static`]; `None`
+    /// otherwise): the very polynomial [`CharPoly::from_placed`] gives
+    /// them, without placements or polynomials in `u`. Both quadrics are
+    /// constant integer matrices ([`static_quadric`]: the ones
+    /// [`PlacedQuadric::quadric`] forms), `det(λA + B)` is their
+    /// [`characteristic`], and the normalisation (module docs) of constant
+    /// coefficients is the removal of their content alone (`det A`, `det B`
+    /// have no factor in `u`). In `i128` ([`SmallInt`]) when every number
+    /// on the way fits, else over [`Int`] (the same integers).
+    pub fn of_static(a: &Body, b: &Body) -> Option<CharPoly> {
+        fn static_body(body: &Body) -> Option<StaticBody<'_>> {
+            match &body.motion {
+                Motion::Static {
+                    center,
+                    orientation,
+                } => Some((&body.radii, center, orientation)),
+                _ => None,
+            }
+        }
+        let (a, b) = (static_body(a)?, static_body(b)?);
+        let small: Option<Vec<Int>> = static_characteristic::<SmallInt>(&a, &b)
+            .iter()
+            .map(SmallInt::to_int)
+            .collect();
+        let f: [Int; 5] = match small.map(<[Int; 5]>::try_from) {
+            Some(Ok(f)) => f,
+            _ => static_characteristic::<Int>(&a, &b),
+        };
+        Some(CharPoly {
+            coeffs: f.map(ZPoly::constant),
+        })
+    }
+
     /// `deg_t f`: the largest degree of a coefficient.
     pub fn degree(&self) -> usize {
         self.coeffs
@@ -135,6 +169,23 @@ impl CharPoly {
             c.eval_homogeneous(u) * u.denom().pow((d - top) as u32)
         })
     }
+}
+
+/// A static body's radii, centre and orientation.
+type StaticBody<'a> = (&'a [Rat; 3], &'a Vec3, &'a Quat);
+
+/// `det(λA + B)` of two static bodies over `I`, divided by the gcd of its
+/// coefficients ([`CharPoly::of_static`]).
+fn static_characteristic<I: Integer>(a: &StaticBody, b: &StaticBody) -> [I; 5] {
+    let quadric = |(radii, center, q): &StaticBody| static_quadric::<I>(radii, center, q);
+    let f = characteristic(&quadric(a), &quadric(b));
+    let g = f
+        .iter()
+        .fold(I::zero(), |g, c| if g.is_one() { g } else { g.gcd(c) });
+    if g.is_zero() || g.is_one() {
+        return f;
+    }
+    f.map(|c| c.div_exact(&g))
 }
 
 /// A matrix in [`SmallPoly`] (entries that do not fit come in overflowed,

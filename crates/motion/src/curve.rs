@@ -2,30 +2,73 @@
 //! integer coefficients.
 
 use crate::kinds::Bezier;
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Rat, Ring, RingOps, SmallInt};
 use ccd_poly::{bernstein_to_power, ZPoly};
+
+/// The exact integer types the motion's numbers are brought to: [`Int`],
+/// and [`SmallInt`] (an `i128` that overflows) for a route that runs over
+/// machine words first and over [`Int`] again when a number does not fit.
+pub(crate) trait Integer: Ring {
+    /// The image of an [`Int`] (overflowed if it does not fit).
+    fn of(x: &Int) -> Self;
+    /// The non-negative greatest common divisor.
+    fn gcd(&self, o: &Self) -> Self;
+    /// `self == 1`.
+    fn is_one(&self) -> bool;
+}
+
+impl Integer for Int {
+    fn of(x: &Int) -> Int {
+        x.clone()
+    }
+    fn gcd(&self, o: &Int) -> Int {
+        Int::gcd(self, o)
+    }
+    fn is_one(&self) -> bool {
+        Int::is_one(self)
+    }
+}
+
+impl Integer for SmallInt {
+    fn of(x: &Int) -> SmallInt {
+        SmallInt::of(x)
+    }
+    fn gcd(&self, o: &SmallInt) -> SmallInt {
+        SmallInt::gcd(self, o)
+    }
+    fn is_one(&self) -> bool {
+        *self == SmallInt::one()
+    }
+}
 
 /// The lcm of the denominators of `values` (`1` for none), skipping the
 /// usual denominators `1` and those equal to the running lcm.
-pub(crate) fn common_denominator<'a>(values: impl IntoIterator<Item = &'a Rat>) -> Int {
-    values.into_iter().fold(Int::one(), |l, v| {
-        let d = v.denom();
-        if d.is_one() || *d == l {
+pub(crate) fn common_denominator<'a, I: Integer>(values: impl IntoIterator<Item = &'a Rat>) -> I {
+    values.into_iter().fold(I::one(), |l, v| {
+        if v.denom().is_one() {
+            return l;
+        }
+        let d = I::of(v.denom());
+        if d == l {
             l
         } else {
-            l.lcm(d)
+            // lcm(l, d) of positive denominators.
+            l.div_exact(&l.gcd(&d)).times(&d)
         }
     })
 }
 
 /// `x·den` for a multiple `den` of the denominator of `x`: an integer.
-pub(crate) fn times_denominator(x: &Rat, den: &Int) -> Int {
-    if x.denom() == den {
-        x.numer().clone()
-    } else if x.denom().is_one() {
-        x.numer() * den
+pub(crate) fn times_denominator<I: Integer>(x: &Rat, den: &I) -> I {
+    let numer = I::of(x.numer());
+    if x.denom().is_one() {
+        return numer.times(den);
+    }
+    let d = I::of(x.denom());
+    if d == *den {
+        numer
     } else {
-        x.numer() * &den.div_exact(x.denom())
+        numer.times(&den.div_exact(&d))
     }
 }
 
@@ -53,7 +96,7 @@ pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
         Some(w) => curve.points.iter().zip(w).map(|(p, w)| &p[k] * w).collect(),
         None => curve.points.iter().map(|p| p[k].clone()).collect(),
     });
-    let den = common_denominator(values.iter().flatten().chain(&weights));
+    let den: Int = common_denominator(values.iter().flatten().chain(&weights));
     let scaled = |v: &[Rat]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
     PolyCurve {
         numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),

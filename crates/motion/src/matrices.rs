@@ -3,9 +3,9 @@
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
 use crate::centred::Centred;
-use crate::curve::{common_denominator, times_denominator, to_poly_curve, PolyCurve};
+use crate::curve::{common_denominator, times_denominator, to_poly_curve, Integer, PolyCurve};
 use crate::error::MotionError;
-use crate::kinds::{Bezier, Body, Motion, Quat};
+use crate::kinds::{Bezier, Body, Motion, Quat, Vec3};
 use ccd_arith::{Int, Rat, RingOps};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
@@ -123,7 +123,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
     // A constant orientation: the rotation of the integer quaternion `L·q`
     // over ℤ, then as constants (no polynomial or rational arithmetic).
     let fixed = |q: &Quat, center: [ZPoly; 3], w: ZPoly| {
-        let q = rat_vec_to_int(q);
+        let q: [Int; 4] = rat_vec_to_int(q.each_ref());
         Frame::Rigid {
             m: rotation_numerator(&q).map(|row| row.map(ZPoly::constant)),
             n: ZPoly::constant(norm2(&q)),
@@ -149,13 +149,9 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
             orientation,
         } => {
             // (C, 1) times the lcm of the denominators.
-            let [x, y, z, w] = rat_vec_to_int(&[
-                center[0].clone(),
-                center[1].clone(),
-                center[2].clone(),
-                Rat::one(),
-            ])
-            .map(ZPoly::constant);
+            let one = Rat::one();
+            let [x, y, z, w] = rat_vec_to_int::<Int, 4>([&center[0], &center[1], &center[2], &one])
+                .map(ZPoly::constant);
             Ok((fixed(orientation, [x, y, z], w), vec![]))
         }
         Motion::Translation {
@@ -251,9 +247,9 @@ fn primitive_matrix(n: Mat4<ZPoly>) -> Mat4<ZPoly> {
 }
 
 /// `v` times the lcm of its denominators.
-fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
+fn rat_vec_to_int<I: Integer, const N: usize>(v: [&Rat; N]) -> [I; N] {
     let den = common_denominator(v);
-    v.each_ref().map(|x| times_denominator(x, &den))
+    v.map(|x| times_denominator(x, &den))
 }
 
 /// `body_diagonal(radii)` times the lcm of its entries' denominators, in
@@ -264,22 +260,46 @@ fn rat_vec_to_int<const N: usize>(v: &[Rat; N]) -> [Int; N] {
 /// `t·e` integral are the multiples of the lcm `L` of the reduced
 /// denominators, and `L | M`; so `L = M/k` for the largest `k` dividing `M`
 /// and every `Eⱼ`, `k = gcd(M, E)`, and the result `L·e` is `E/k`.
-fn integer_diagonal(radii: &[Rat; 3]) -> [Int; 4] {
-    let e = body_diagonal(&radii.each_ref().map(|r| r.numer().clone()));
-    let [d0, d1, d2] = radii.each_ref().map(Rat::denom);
-    let m = d0 * d1 * d2;
-    let squares = [d0, d1, d2].map(|d| d * d);
-    let scaled: [Int; 4] = std::array::from_fn(|i| match squares.get(i) {
-        Some(s) if !s.is_one() => &e[i] * s,
+fn integer_diagonal<I: Integer>(radii: &[Rat; 3]) -> [I; 4] {
+    let e = body_diagonal(&radii.each_ref().map(|r| I::of(r.numer())));
+    let [d0, d1, d2] = radii.each_ref().map(|r| I::of(r.denom()));
+    let m = d0.times(&d1).times(&d2);
+    let squares = [d0, d1, d2].map(|d| d.times(&d));
+    let scaled: [I; 4] = std::array::from_fn(|i| match squares.get(i) {
+        Some(s) if !s.is_one() => e[i].times(s),
         _ => e[i].clone(),
     });
     let k = scaled
         .iter()
-        .fold(&m * &m, |g, x| if g.is_one() { g } else { g.gcd(x) });
+        .fold(m.times(&m), |g, x| if g.is_one() { g } else { g.gcd(x) });
     if k.is_one() {
         return scaled;
     }
     scaled.map(|x| x.div_exact(&k))
+}
+
+/// The quadric of a static body (radii, centre, orientation quaternion)
+/// over `I`: the constant matrix [`PlacedQuadric::quadric`] gives, formed
+/// without polynomials. The frame of [`frame`] (the quaternion and
+/// `(C, 1)` each times the lcm of its denominators), its inverse
+/// `rigid_inverse(M(q), |q|², C, w)` divided by the gcd of its entries
+/// (what [`primitive_matrix`] does to constants), then `NᵀDN` with the
+/// integer body diagonal.
+pub(crate) fn static_quadric<I: Integer>(radii: &[Rat; 3], center: &Vec3, q: &Quat) -> Mat4<I> {
+    let q: [I; 4] = rat_vec_to_int(q.each_ref());
+    let one = Rat::one();
+    let [x, y, z, w] = rat_vec_to_int([&center[0], &center[1], &center[2], &one]);
+    let n = rigid_inverse(&rotation_numerator(&q), &norm2(&q), &[x, y, z], &w);
+    let g = n
+        .iter()
+        .flatten()
+        .fold(I::zero(), |g, e| if g.is_one() { g } else { g.gcd(e) });
+    let n = if g.is_zero() || g.is_one() {
+        n
+    } else {
+        n.map(|row| row.map(|e| e.div_exact(&g)))
+    };
+    congruence(&n, &integer_diagonal(radii))
 }
 
 /// A placed body: its placement, its body quadric and what is known about
@@ -455,7 +475,7 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
         .collect();
     Ok(PlacedQuadric {
         frame,
-        diagonal: integer_diagonal(&body.radii).map(ZPoly::constant),
+        diagonal: integer_diagonal::<Int>(&body.radii).map(ZPoly::constant),
         det_factors,
     })
 }
@@ -674,7 +694,7 @@ mod tests {
             radii in proptest::collection::vec((1i64..60, 1i64..60), 3),
         ) {
             let r: [Rat; 3] = std::array::from_fn(|i| Rat::from_frac(radii[i].0, radii[i].1));
-            proptest::prop_assert_eq!(integer_diagonal(&r), rat_vec_to_int(&body_diagonal(&r)));
+            proptest::prop_assert_eq!(integer_diagonal::<Int>(&r), rat_vec_to_int::<Int, 4>(body_diagonal(&r).each_ref()));
         }
     }
 

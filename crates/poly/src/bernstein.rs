@@ -436,8 +436,11 @@ impl ZPoly {
     /// assert_eq!(ZPoly::from_i64s(&[0, 0, 1]).scaled_bernstein(), [0, 0, 1].map(Int::from));
     /// ```
     pub fn scaled_bernstein(&self) -> Vec<Int> {
-        if self.coeffs().is_empty() {
-            return vec![Int::zero()];
+        match self.coeffs() {
+            [] => return vec![Int::zero()],
+            // A constant is its own (scaled) Bernstein coefficient.
+            [c] => return vec![c.clone()],
+            _ => {}
         }
         // The shift adds at most n bits (the entries are sums of at most
         // 2^n coefficients): machine integers when that fits in i128.

@@ -71,13 +71,98 @@ use ccd_arith::{Interval, RingOps};
 #[derive(Clone, Debug, PartialEq)]
 pub struct BernsteinF64 {
     /// Scaled coefficients of the value.
-    val: Vec<f64>,
+    val: Coeffs,
     /// Scaled coefficients of the magnitude (all ≥ 0).
-    mag: Vec<f64>,
+    mag: Coeffs,
     /// Roundings along any path to a coefficient (module docs).
     rounds: u64,
     /// What underflow can add to any coefficient (module docs).
     tiny: f64,
+}
+
+/// A coefficient sequence: a single coefficient inline, longer ones on the
+/// heap. The closed forms of a constant `f` (a static pair) are some sixty
+/// sums and products of constants, which would otherwise each allocate two
+/// one-element vectors; the arithmetic is the same either way.
+#[derive(Clone)]
+enum Coeffs {
+    One(f64),
+    Many(Vec<f64>),
+}
+
+impl Coeffs {
+    /// `n` zeros.
+    fn zeros(n: usize) -> Coeffs {
+        if n == 1 {
+            Coeffs::One(0.0)
+        } else {
+            Coeffs::Many(vec![0.0; n])
+        }
+    }
+}
+
+impl std::ops::Deref for Coeffs {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        match self {
+            Coeffs::One(x) => std::slice::from_ref(x),
+            Coeffs::Many(v) => v,
+        }
+    }
+}
+
+impl std::ops::DerefMut for Coeffs {
+    fn deref_mut(&mut self) -> &mut [f64] {
+        match self {
+            Coeffs::One(x) => std::slice::from_mut(x),
+            Coeffs::Many(v) => v,
+        }
+    }
+}
+
+impl From<Vec<f64>> for Coeffs {
+    fn from(v: Vec<f64>) -> Coeffs {
+        match v[..] {
+            [x] => Coeffs::One(x),
+            _ => Coeffs::Many(v),
+        }
+    }
+}
+
+impl FromIterator<f64> for Coeffs {
+    fn from_iter<I: IntoIterator<Item = f64>>(iter: I) -> Coeffs {
+        let mut iter = iter.into_iter();
+        let Some(first) = iter.next() else {
+            return Coeffs::Many(Vec::new());
+        };
+        let Some(second) = iter.next() else {
+            return Coeffs::One(first);
+        };
+        let mut v = Vec::with_capacity(2 + iter.size_hint().0);
+        v.extend([first, second]);
+        v.extend(iter);
+        Coeffs::Many(v)
+    }
+}
+
+impl<'a> IntoIterator for &'a Coeffs {
+    type Item = &'a f64;
+    type IntoIter = std::slice::Iter<'a, f64>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl PartialEq for Coeffs {
+    fn eq(&self, o: &Coeffs) -> bool {
+        **self == **o
+    }
+}
+
+impl std::fmt::Debug for Coeffs {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        (**self).fmt(f)
+    }
 }
 
 /// `2^(−1074)`: the most one underflowing product can lose.
@@ -120,8 +205,8 @@ pub fn binomial_row(n: usize) -> Vec<f64> {
 }
 
 /// `a * b` as a convolution of coefficient sequences.
-fn convolve(a: &[f64], b: &[f64]) -> Vec<f64> {
-    let mut out = vec![0.0; a.len() + b.len() - 1];
+fn convolve(a: &[f64], b: &[f64]) -> Coeffs {
+    let mut out = Coeffs::zeros(a.len() + b.len() - 1);
     for (i, &x) in a.iter().enumerate() {
         if x == 0.0 {
             continue;
@@ -159,8 +244,8 @@ impl BernsteinF64 {
         }
         let n = power.len() - 1;
         let rounds = row_rounds(n) + n as u64 + 1;
-        let mut val = vec![0.0; n + 1];
-        let mut mag = vec![0.0; n + 1];
+        let mut val = Coeffs::zeros(n + 1);
+        let mut mag = Coeffs::zeros(n + 1);
         for (j, &a) in power.iter().enumerate() {
             if a == 0.0 {
                 continue;
@@ -188,7 +273,7 @@ impl BernsteinF64 {
         }
         let mag = scaled.iter().map(|c| c.abs()).collect();
         BernsteinF64 {
-            val: scaled,
+            val: scaled.into(),
             mag,
             rounds: 2,
             tiny: ETA,
@@ -340,8 +425,8 @@ impl RingOps for BernsteinF64 {
     }
     fn from_i64(v: i64) -> Self {
         BernsteinF64 {
-            val: vec![v as f64],
-            mag: vec![(v as f64).abs()],
+            val: Coeffs::One(v as f64),
+            mag: Coeffs::One((v as f64).abs()),
             // Exact below 2^53 in magnitude, one rounding beyond.
             rounds: u64::from(v.unsigned_abs() > 1 << 53),
             tiny: 0.0,
@@ -388,6 +473,22 @@ mod tests {
 
     fn horner(p: &[f64], u: f64) -> f64 {
         p.iter().rev().fold(0.0, |acc, c| acc * u + c)
+    }
+
+    #[test]
+    fn inline_constants_are_the_vectors_they_stand_for() {
+        // One coefficient inline, others on the heap: the same sequences.
+        for v in [vec![], vec![-0.0], vec![2.5], vec![1.0, -3.0, 0.5]] {
+            let c: Coeffs = v.iter().copied().collect();
+            assert_eq!(*c, v[..]);
+            assert_eq!(matches!(c, Coeffs::One(_)), v.len() == 1);
+            assert_eq!(Coeffs::from(v.clone()), c);
+        }
+        // Products of constants: the convolution's sum (+0 for a zero
+        // factor, as the vectors it replaces gave).
+        assert_eq!(*convolve(&[3.0], &[-0.5]), [-1.5]);
+        assert!(convolve(&[0.0], &[-2.0])[0].is_sign_positive());
+        assert!(convolve(&[-2.0], &[0.0])[0].is_sign_positive());
     }
 
     #[test]
