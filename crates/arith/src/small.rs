@@ -18,8 +18,17 @@ use crate::{Int, Ring, RingOps};
 /// assert_eq!(x.times(&x).to_int(), Some(&Int::from(i64::MAX) * &Int::from(i64::MAX)));
 /// assert_eq!(x.times(&x).times(&x).to_int(), None); // about 2^189
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 pub struct SmallInt(i128);
+
+/// Equal only as exact values: an overflowed value equals nothing, not even
+/// another overflowed one (like a NaN), so no test `x == y` can pass on two
+/// values that did not fit.
+impl PartialEq for SmallInt {
+    fn eq(&self, o: &SmallInt) -> bool {
+        self.exact().is_some() && self.0 == o.0
+    }
+}
 
 /// The overflow marker (so `−2^127` itself counts as an overflow: the
 /// routine then runs over [`Int`], which is only slower).
@@ -147,6 +156,15 @@ impl Ring for SmallInt {
 mod tests {
     use super::SmallInt;
     use crate::{Int, Ring, RingOps};
+
+    #[test]
+    fn overflowed_values_equal_nothing() {
+        let big = SmallInt::of(&Int::one().shl(200));
+        let other = SmallInt::of(&Int::one().shl(300));
+        assert!(big != other && big != big);
+        assert!(big != SmallInt::from_i64(0));
+        assert_eq!(SmallInt::from_i64(7), SmallInt::of(&Int::from(7)));
+    }
 
     proptest::proptest! {
         /// Every operation is the exact one on `Int`, or overflowed only

@@ -444,6 +444,40 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
 mod tests {
     use super::*;
 
+    /// A static body whose quaternion components all have denominators
+    /// beyond `i128` (found by review: two overflowed denominators compared
+    /// equal, so `i128` returned bare numerators as exact): the lean `f` is
+    /// still the placements' one.
+    #[test]
+    fn static_pairs_with_denominators_beyond_i128() {
+        use crate::kinds::Motion;
+        let r = |s: &str| -> Rat { s.parse().unwrap() };
+        let body = |radii: [&str; 3], center: [&str; 3], orientation: [&str; 4]| Body {
+            radii: radii.map(r),
+            motion: Motion::Static {
+                center: center.map(r),
+                orientation: orientation.map(r),
+            },
+        };
+        let a = body(
+            ["1", "1", "10"],
+            ["0", "0", "0"],
+            [
+                "1/10000000000000000000000000000000000000001",
+                "7/100000000000000000000000000000000000000003",
+                "2/1000000000000000000000000000000000000007",
+                "3/10000000000000000000000000000000000000009",
+            ],
+        );
+        let b = body(["1", "1", "5"], ["4", "1", "0"], ["1", "0", "0", "0"]);
+        let span = [Rat::zero(), Rat::one()];
+        let placed = CharPoly::from_placed(
+            &placed_quadric(&a, &span).expect("a valid body"),
+            &placed_quadric(&b, &span).expect("a valid body"),
+        );
+        assert_eq!(CharPoly::of_static(&a, &b), Some(placed));
+    }
+
     #[test]
     fn known_factors_give_the_same_normalisation() {
         use crate::kinds::{Bezier, Motion};
