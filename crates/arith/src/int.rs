@@ -201,19 +201,32 @@ impl Int {
     /// `(m, e)` with `|self| = m · 2^e + r`, `0 <= r < 2^e`, and `m < 2^64`
     /// holding the leading bits of `|self|`; `e = 0` when `|self| < 2^64`.
     pub fn top_bits(&self) -> (u64, u64) {
-        let b = self.bits();
-        if b <= 64 {
-            (k::u64_digit_of_abs(&self.0, 0), 0)
-        } else {
-            // ⌊|self|/2^e⌋ straight from the two 64-bit digits holding it.
-            let e = b - 64;
-            let (idx, off) = ((e / 64) as usize, e % 64);
-            let mut m = k::u64_digit_of_abs(&self.0, idx) >> off;
-            if off > 0 {
-                m |= k::u64_digit_of_abs(&self.0, idx + 1) << (64 - off);
-            }
-            (m, e)
+        let e = self.bits().saturating_sub(64);
+        (self.abs_window(e as i64), e)
+    }
+    /// Bits `lo .. lo + 64` of `|self|` as a machine word, `⌊|self|·2^(−lo)⌋
+    /// mod 2^64`, read from the (at most two) 64-bit digits holding them
+    /// without a shifted copy; bits below position 0 read as zeros.
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// let x = Int::from(-0b1011);
+    /// assert_eq!(x.abs_window(1), 0b101);
+    /// assert_eq!(x.abs_window(-2), 0b101100);
+    /// ```
+    pub fn abs_window(&self, lo: i64) -> u64 {
+        if lo < 0 {
+            return match u32::try_from(lo.unsigned_abs()) {
+                Ok(up) if up < 64 => k::u64_digit_of_abs(&self.0, 0) << up,
+                _ => 0,
+            };
         }
+        let (idx, off) = (usize::try_from(lo / 64).unwrap_or(usize::MAX), lo % 64);
+        let mut w = k::u64_digit_of_abs(&self.0, idx) >> off;
+        if off > 0 {
+            w |= k::u64_digit_of_abs(&self.0, idx.saturating_add(1)) << (64 - off);
+        }
+        w
     }
     /// A nearest-ish `f64` (not certified; see [`crate::Interval::from_int`]).
     pub fn to_f64(&self) -> f64 {
@@ -325,9 +338,10 @@ assignop!(MulAssign, mul_assign, k::mul_assign);
 
 impl Neg for Int {
     type Output = Int;
+    /// In place: every kernel negates an owned number without a copy.
     #[inline]
     fn neg(self) -> Int {
-        Int(k::neg(&self.0))
+        Int(-self.0)
     }
 }
 impl Neg for &Int {
@@ -448,6 +462,16 @@ mod tests {
             let p = &x * &y;
             if b != 0 { prop_assert_eq!(p.div_exact(&y), x.clone()); }
             prop_assert_eq!(x.to_string(), a.to_string());
+        }
+
+        /// Every window of `|x|` against the shifted copy it avoids.
+        #[test]
+        fn abs_window_matches_shifts(a in any::<i64>(), s in 0u64..300, lo in -80i64..400) {
+            let x = Int::from(a).shl(s);
+            let shifted = if lo >= 0 { x.abs().shr_floor(lo as u64) } else { x.abs().shl(lo.unsigned_abs()) };
+            let low = shifted.abs_window(0);
+            prop_assert_eq!(x.abs_window(lo), low);
+            prop_assert_eq!(Int::from_u64(low), &shifted - &shifted.shr_floor(64).shl(64));
         }
 
         #[test]
