@@ -138,37 +138,16 @@ impl Dyadic {
         if a != b || a == 0 {
             return a.cmp(&b);
         }
-        let magnitude = self.cmp_abs(o);
+        let magnitude = self.m.cmp_abs_scaled(self.e, &o.m, o.e);
         if a > 0 {
             magnitude
         } else {
             magnitude.reverse()
         }
     }
-    /// `|self|` against `|o|`, both non-zero, without shifted copies:
-    /// `|m·2^e| ∈ [2^(t−1), 2^t)` with `t = bits(m) + e`, so different `t`
-    /// decide; for equal `t` the mantissas are aligned at their leading
-    /// bits and read 64 bits at a time from the top
-    /// ([`Int::abs_window`]), the shorter one padded with zeros.
-    fn cmp_abs(&self, o: &Dyadic) -> Ordering {
-        let (ba, bb) = (self.m.bits() as i64, o.m.bits() as i64);
-        let top = (ba + self.e).cmp(&(bb + o.e));
-        if top != Ordering::Equal {
-            return top;
-        }
-        let mut down = 64;
-        loop {
-            let word = self.m.abs_window(ba - down).cmp(&o.m.abs_window(bb - down));
-            if word != Ordering::Equal || down >= ba.max(bb) {
-                return word;
-            }
-            down += 64;
-        }
-    }
     /// Rounded to `prec` significant bits, down (`up == false`) or up:
-    /// `⌊m·2^(−s)⌋·2^(e+s)` with `s = bits(m) − prec`, plus one unit of
-    /// the last place upward when a dropped bit is set (`⌈x⌉ = ⌊x⌋ + 1`
-    /// for non-integer `x`).
+    /// `⌊m·2^(−s)⌋·2^(e+s)` (resp. `⌈⌉`) with `s = bits(m) − prec`
+    /// ([`Int::shr_round`]).
     fn round(self, prec: u32, up: bool) -> Dyadic {
         if prec == 0 {
             return self;
@@ -178,12 +157,8 @@ impl Dyadic {
             return self;
         }
         let s = bits - prec as u64;
-        let mut m = self.m.shr_floor(s);
-        if up && self.m.trailing_zeros().is_some_and(|z| z < s) {
-            m += &Int::one();
-        }
         Dyadic {
-            m,
+            m: self.m.shr_round(s, up),
             e: self.e + s as i64,
         }
     }
