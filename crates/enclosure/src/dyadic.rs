@@ -162,29 +162,28 @@ impl Dyadic {
             e: self.e + s as i64,
         }
     }
-    /// `⌊n·2^s / d⌋·2^(−s)` (down) or with `⌈⌉` (up), for `d > 0`.
+    /// `⌊n·2^s / d⌋·2^(−s)` (down) or with `⌈⌉` (up), for `d ≠ 0`: one
+    /// truncated division, the quotient stepped by one when the remainder
+    /// is not zero and its sign (the dividend's) says the truncation went
+    /// the wrong way (up for `⌊⌋` when it differs from the divisor's, down
+    /// for `⌈⌉` when it agrees).
     fn quotient(n: &Int, d: &Int, s: i64, up: bool) -> Dyadic {
-        let (num, den) = if s >= 0 {
-            (n.shl(s as u64), d.clone())
+        let (q, r) = if s >= 0 {
+            n.shl(s as u64).div_rem_trunc(d)
         } else {
-            (n.clone(), d.shl(s.unsigned_abs()))
+            n.div_rem_trunc(&d.shl(s.unsigned_abs()))
         };
-        let m = if up {
-            -(-&num).div_floor(&den)
-        } else {
-            num.div_floor(&den)
+        let m = match (r.signum() * d.signum(), up) {
+            (1, true) => q + Int::one(),
+            (-1, false) => q - Int::one(),
+            _ => q,
         };
         Dyadic { m, e: -s }
     }
     /// An outward rounding of `a / b` (`b ≠ 0`) to about `prec` bits.
     fn div(a: &Dyadic, b: &Dyadic, prec: u32, up: bool) -> Dyadic {
-        let (bm, am) = if b.m.is_negative() {
-            (-&b.m, -&a.m)
-        } else {
-            (b.m.clone(), a.m.clone())
-        };
-        let s = prec as i64 + 2 + bm.bits() as i64 - am.bits() as i64;
-        let q = Dyadic::quotient(&am, &bm, s, up);
+        let s = prec as i64 + 2 + b.m.bits() as i64 - a.m.bits() as i64;
+        let q = Dyadic::quotient(&a.m, &b.m, s, up);
         Dyadic {
             m: q.m,
             e: q.e + a.e - b.e,
@@ -728,6 +727,14 @@ mod tests {
                 up,
             )
         }
+        pub fn from_rat(q: &ccd_arith::Rat, prec: u32) -> (Dyadic, Dyadic) {
+            let bits = prec.max(64);
+            let s = bits as i64 + 2 + q.denom().bits() as i64 - q.numer().bits() as i64;
+            (
+                quotient(q.numer(), q.denom(), s, false),
+                quotient(q.numer(), q.denom(), s, true),
+            )
+        }
         pub fn div(a: &BigInterval, o: &BigInterval) -> BigInterval {
             let prec = a.prec.max(o.prec).max(64);
             let ends = [
@@ -839,6 +846,12 @@ mod tests {
                 a.with_prec(p),
                 reference::new(a.lo.clone(), a.hi.clone(), p)
             );
+            if let Some(q) = Rat::new(a.lo.m.clone(), b.hi.m.clone()) {
+                if Dyadic::from_rat_exact(&q).is_none() {
+                    let r = BigInterval::from_rat(&q, p);
+                    prop_assert_eq!((r.lo, r.hi), reference::from_rat(&q, p));
+                }
+            }
             let narrow = |x: &BigInterval| x.with_prec(80);
             let proper = reference::cmp(&b.lo, &b.hi) != Ordering::Greater;
             if proper && !b.contains_zero() && b.lo.m.bits() + b.hi.m.bits() < 600 {
