@@ -96,16 +96,28 @@ pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {
     let r = a.rem_euclid(IBig::from(p));
     u64::try_from(&r).expect("below p")
 }
+/// The magnitude's 64-bit words, borrowed.
+#[inline]
+pub(crate) fn abs_digits(a: &Inner) -> std::borrow::Cow<'_, [u64]> {
+    std::borrow::Cow::Borrowed(words(a))
+}
 pub(crate) fn to_u64_limbs(a: &Inner) -> (bool, Vec<u64>) {
     (a.sign() == Sign::Negative, words(a).to_vec())
 }
+/// Numbers of up to two significant words are built inline (dashu's
+/// `from_sign_words` allocates a buffer first, even for those).
 pub(crate) fn from_u64_limbs(negative: bool, limbs: &[u64]) -> Inner {
     let s = if negative {
         Sign::Negative
     } else {
         Sign::Positive
     };
-    IBig::from_sign_words(s, limbs)
+    let significant = limbs.iter().rposition(|&w| w != 0).map_or(0, |i| i + 1);
+    if significant <= 2 {
+        let digit = |i: usize| limbs.get(i).map_or(0, |&w| u128::from(w));
+        return IBig::from_parts(s, dashu_int::UBig::from(digit(1) << 64 | digit(0)));
+    }
+    IBig::from_sign_words(s, &limbs[..significant])
 }
 pub(crate) fn parse_decimal(s: &str) -> Option<Inner> {
     IBig::from_str_radix(s, 10).ok()

@@ -108,6 +108,11 @@ pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {
     }
     r.to_u64().unwrap_or(0)
 }
+/// The magnitude's 64-bit limbs, borrowed.
+#[inline]
+pub(crate) fn abs_digits(a: &Inner) -> std::borrow::Cow<'_, [u64]> {
+    std::borrow::Cow::Borrowed(a.as_limbs())
+}
 pub(crate) fn to_u64_limbs(a: &Inner) -> (bool, Vec<u64>) {
     let mut limbs = vec![0u64; a.significant_digits::<u64>()];
     a.write_digits(&mut limbs, Order::Lsf);

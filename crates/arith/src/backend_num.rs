@@ -123,6 +123,11 @@ pub(crate) fn mod_u64(a: &Inner, p: u64) -> u64 {
         r
     }
 }
+/// The magnitude's 64-bit digits (num-bigint keeps no such slice: a copy).
+#[inline]
+pub(crate) fn abs_digits(a: &Inner) -> std::borrow::Cow<'_, [u64]> {
+    std::borrow::Cow::Owned(a.magnitude().to_u64_digits())
+}
 pub(crate) fn to_u64_limbs(a: &Inner) -> (bool, Vec<u64>) {
     (a.sign() == Sign::Minus, a.magnitude().to_u64_digits())
 }

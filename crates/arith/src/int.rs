@@ -7,6 +7,7 @@
 
 use crate::kernel as k;
 
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
@@ -201,19 +202,101 @@ impl Int {
     /// `(m, e)` with `|self| = m · 2^e + r`, `0 <= r < 2^e`, and `m < 2^64`
     /// holding the leading bits of `|self|`; `e = 0` when `|self| < 2^64`.
     pub fn top_bits(&self) -> (u64, u64) {
-        let b = self.bits();
-        if b <= 64 {
-            (k::u64_digit_of_abs(&self.0, 0), 0)
-        } else {
-            // ⌊|self|/2^e⌋ straight from the two 64-bit digits holding it.
-            let e = b - 64;
-            let (idx, off) = ((e / 64) as usize, e % 64);
-            let mut m = k::u64_digit_of_abs(&self.0, idx) >> off;
-            if off > 0 {
-                m |= k::u64_digit_of_abs(&self.0, idx + 1) << (64 - off);
-            }
-            (m, e)
+        let e = self.bits().saturating_sub(64);
+        (self.abs_window(e as i64), e)
+    }
+    /// The 64-bit digits of `|self|`, least significant first, borrowed
+    /// where the kernel stores them that way (dashu, GMP).
+    #[inline]
+    fn abs_digits(&self) -> Cow<'_, [u64]> {
+        k::abs_digits(&self.0)
+    }
+    /// Bits `lo .. lo + 64` of `|self|` as a machine word, `⌊|self|·2^(−lo)⌋
+    /// mod 2^64`, read from the (at most two) 64-bit digits holding them
+    /// without a shifted copy; bits below position 0 read as zeros.
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// let x = Int::from(-0b1011);
+    /// assert_eq!(x.abs_window(1), 0b101);
+    /// assert_eq!(x.abs_window(-2), 0b101100);
+    /// ```
+    #[inline]
+    pub fn abs_window(&self, lo: i64) -> u64 {
+        window(&self.abs_digits(), lo)
+    }
+    /// `|self|·2^a` against `|o|·2^b`, without shifted copies: a number
+    /// `|m| ≠ 0` lies in `[2^(t−1), 2^t)` with `t = bits(m)`, so different
+    /// `bits + exponent` decide; otherwise the digits are compared 64 bits
+    /// at a time from the leading bit down, aligned there (the shorter
+    /// number reads zeros past its end).
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// use std::cmp::Ordering;
+    /// // 3·2^4 = 48 = 12·2^2 < 13·2^2
+    /// assert_eq!(Int::from(3).cmp_abs_scaled(4, &Int::from(-12), 2), Ordering::Equal);
+    /// assert_eq!(Int::from(3).cmp_abs_scaled(4, &Int::from(13), 2), Ordering::Less);
+    /// ```
+    pub fn cmp_abs_scaled(&self, a: i64, o: &Int, b: i64) -> Ordering {
+        let (bx, by) = (self.bits() as i64, o.bits() as i64);
+        if bx == 0 || by == 0 {
+            return bx.cmp(&by);
         }
+        let top = (bx + a).cmp(&(by + b));
+        if top != Ordering::Equal {
+            return top;
+        }
+        let (x, y) = (self.abs_digits(), o.abs_digits());
+        let mut down = 64;
+        loop {
+            let w = window(&x, bx - down).cmp(&window(&y, by - down));
+            if w != Ordering::Equal || down >= bx.max(by) {
+                return w;
+            }
+            down += 64;
+        }
+    }
+    /// `⌊self·2^(−s)⌋` (`up == false`) or `⌈self·2^(−s)⌉`, truncating the
+    /// magnitude digit by digit and adding one unit away from zero when a
+    /// dropped bit is set and the direction asks for it (down for a
+    /// negative number, up for a positive one): no shifted copy, no
+    /// negation, one allocation at most (none up to 128 bits with dashu).
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// assert_eq!(Int::from(-7).shr_round(1, false), Int::from(-4));
+    /// assert_eq!(Int::from(-7).shr_round(1, true), Int::from(-3));
+    /// assert_eq!(Int::from(7).shr_round(1, true), Int::from(4));
+    /// ```
+    pub fn shr_round(&self, s: u64, up: bool) -> Int {
+        let Some(zeros) = self.trailing_zeros() else {
+            return Int::zero();
+        };
+        let negative = self.is_negative();
+        let n = self.bits().saturating_sub(s).div_ceil(64) as usize;
+        let mut stack = [0u64; 10];
+        let mut heap = Vec::new();
+        let words = if n < stack.len() {
+            &mut stack[..=n]
+        } else {
+            heap.resize(n + 1, 0);
+            &mut heap[..]
+        };
+        let digits = self.abs_digits();
+        for (i, w) in words[..n].iter_mut().enumerate() {
+            *w = window(&digits, (s + 64 * i as u64) as i64);
+        }
+        if zeros < s && up != negative {
+            for w in words.iter_mut() {
+                let (v, carry) = w.overflowing_add(1);
+                *w = v;
+                if !carry {
+                    break;
+                }
+            }
+        }
+        Int::from_u64_limbs(negative, words)
     }
     /// A nearest-ish `f64` (not certified; see [`crate::Interval::from_int`]).
     pub fn to_f64(&self) -> f64 {
@@ -225,6 +308,25 @@ impl Int {
             v
         }
     }
+}
+
+/// Bits `lo .. lo + 64` of the number with 64-bit digits `d` (least
+/// significant first), zeros below position 0 and past the end.
+#[inline]
+fn window(d: &[u64], lo: i64) -> u64 {
+    if lo < 0 {
+        return match d.first() {
+            Some(&w) if lo > -64 => w << lo.unsigned_abs(),
+            _ => 0,
+        };
+    }
+    let (i, off) = ((lo / 64) as usize, lo % 64);
+    let digit = |k: usize| d.get(k).copied().unwrap_or(0);
+    let mut w = digit(i) >> off;
+    if off > 0 {
+        w |= digit(i + 1) << (64 - off);
+    }
+    w
 }
 
 impl std::fmt::Display for Int {
@@ -325,9 +427,10 @@ assignop!(MulAssign, mul_assign, k::mul_assign);
 
 impl Neg for Int {
     type Output = Int;
+    /// In place: every kernel negates an owned number without a copy.
     #[inline]
     fn neg(self) -> Int {
-        Int(k::neg(&self.0))
+        Int(-self.0)
     }
 }
 impl Neg for &Int {
@@ -448,6 +551,32 @@ mod tests {
             let p = &x * &y;
             if b != 0 { prop_assert_eq!(p.div_exact(&y), x.clone()); }
             prop_assert_eq!(x.to_string(), a.to_string());
+        }
+
+        /// Every window of `|x|` against the shifted copy it avoids.
+        #[test]
+        fn abs_window_matches_shifts(a in any::<i64>(), s in 0u64..300, lo in -80i64..400) {
+            let x = Int::from(a).shl(s);
+            let shifted = if lo >= 0 { x.abs().shr_floor(lo as u64) } else { x.abs().shl(lo.unsigned_abs()) };
+            let low = shifted.abs_window(0);
+            prop_assert_eq!(x.abs_window(lo), low);
+            prop_assert_eq!(Int::from_u64(low), &shifted - &shifted.shr_floor(64).shl(64));
+        }
+
+        /// Both routines against the shifted copies they avoid.
+        #[test]
+        fn scaled_comparison_and_rounding_match_shifts(
+            a in any::<i64>(), b in any::<i64>(), sa in 0u64..1000, sb in 0u64..300,
+            ea in -200i64..200, eb in -200i64..200, s in 0u64..400, up in any::<bool>(),
+        ) {
+            let (x, y) = (Int::from(a).shl(sa), Int::from(b).shl(sb));
+            let e = ea.min(eb);
+            let (xs, ys) = (x.abs().shl((ea - e) as u64), y.abs().shl((eb - e) as u64));
+            prop_assert_eq!(x.cmp_abs_scaled(ea, &y, eb), xs.cmp(&ys));
+            let floor = x.shr_floor(s);
+            let exact = floor.shl(s) == x;
+            let expected = if up && !exact { floor + Int::one() } else { floor };
+            prop_assert_eq!(x.shr_round(s, up), expected);
         }
 
         #[test]
