@@ -404,7 +404,10 @@ mod tests {
             bits in prop_oneof![Just(8u64), Just(16), Just(25), Just(40), Just(90)],
         ) {
             let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
-                ZPoly::new(raw[k].iter().map(|&c| Int::from(c >> (64 - bits))).collect())
+                ZPoly::new(raw[k].iter().map(|&c| {
+                    // About `bits` bits: a shift right, or left past 64.
+                    if bits <= 64 { Int::from(c >> (64 - bits)) } else { Int::from(c).shl(bits - 64) }
+                }).collect())
             });
             let f = Coefficients::new(CharPoly { coeffs: coeffs.clone() });
             for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
