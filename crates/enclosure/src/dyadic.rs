@@ -543,7 +543,7 @@ impl RingOps for BigInterval {
     /// `c = [a₀b₀, a₀b₁, a₁b₀, a₁b₁]`, each the first one holding its value
     /// (ties go to the earlier product, as a left-to-right reduction with
     /// strict comparisons keeps them), rounded outward. Only the products
-    /// that [`product_candidates`] cannot rule out are formed: two for
+    /// that `product_candidates` cannot rule out are formed: two for
     /// intervals of known sign, as in the classical case analysis.
     fn times(&self, o: &Self) -> Self {
         let prec = self.prec.max(o.prec);

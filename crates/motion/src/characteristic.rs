@@ -114,7 +114,7 @@ impl CharPoly {
     /// `f(λ)` of two static bodies (both [`Motion::Static`]; `None`
     /// otherwise): the very polynomial [`CharPoly::from_placed`] gives
     /// them, without placements or polynomials in `u`. Both quadrics are
-    /// constant integer matrices ([`static_quadric`]: the ones
+    /// constant integer matrices (`static_quadric`: the ones
     /// [`PlacedQuadric::quadric`] forms), `det(λA + B)` is their
     /// [`characteristic`], and the normalisation (module docs) of constant
     /// coefficients is the removal of their content alone (`det A`, `det B`
