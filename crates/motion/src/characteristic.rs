@@ -444,38 +444,39 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
 mod tests {
     use super::*;
 
-    /// A static body whose quaternion components all have denominators
-    /// beyond `i128` (found by review: two overflowed denominators compared
-    /// equal, so `i128` returned bare numerators as exact): the lean `f` is
-    /// still the placements' one.
-    #[test]
-    fn static_pairs_with_denominators_beyond_i128() {
-        use crate::kinds::Motion;
-        let r = |s: &str| -> Rat { s.parse().unwrap() };
-        let body = |radii: [&str; 3], center: [&str; 3], orientation: [&str; 4]| Body {
-            radii: radii.map(r),
-            motion: Motion::Static {
-                center: center.map(r),
-                orientation: orientation.map(r),
-            },
-        };
-        let a = body(
-            ["1", "1", "10"],
-            ["0", "0", "0"],
-            [
-                "1/10000000000000000000000000000000000000001",
-                "7/100000000000000000000000000000000000000003",
-                "2/1000000000000000000000000000000000000007",
-                "3/10000000000000000000000000000000000000009",
-            ],
-        );
-        let b = body(["1", "1", "5"], ["4", "1", "0"], ["1", "0", "0", "0"]);
-        let span = [Rat::zero(), Rat::one()];
-        let placed = CharPoly::from_placed(
-            &placed_quadric(&a, &span).expect("a valid body"),
-            &placed_quadric(&b, &span).expect("a valid body"),
-        );
-        assert_eq!(CharPoly::of_static(&a, &b), Some(placed));
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// Static bodies of short radii and centres whose quaternion
+        /// components are short numerators over long denominators of their
+        /// own (beyond `i128` together from 2^127 on; found by review: two
+        /// overflowed denominators compared equal, so `i128` returned bare
+        /// numerators as exact): the lean `f` is the placements' one.
+        #[test]
+        fn static_pairs_with_denominators_beyond_i128(
+            numerators in proptest::collection::vec(1i64..20, 4),
+            extra in proptest::collection::vec(1i64..50, 4),
+            long in 40u32..52,
+            radii in proptest::collection::vec(1i64..12, 6),
+            centre in proptest::collection::vec(-9i64..10, 3),
+        ) {
+            use crate::kinds::Motion;
+            let tail = Int::from(7).pow(long);
+            let q: [Rat; 4] = std::array::from_fn(|i| {
+                Rat::new(Int::from(numerators[i]), &tail * &Int::from(extra[i])).expect("nonzero")
+            });
+            let body = |r: &[i64], c: [Rat; 3], orientation: [Rat; 4]| Body {
+                radii: std::array::from_fn(|i| Rat::from(r[i])),
+                motion: Motion::Static { center: c, orientation },
+            };
+            let a = body(&radii[..3], std::array::from_fn(|_| Rat::zero()), q);
+            let b = body(&radii[3..], centre.iter().map(|&x| Rat::from(x)).collect::<Vec<_>>().try_into().expect("three"), [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()]);
+            let span = [Rat::zero(), Rat::one()];
+            let placed = CharPoly::from_placed(
+                &placed_quadric(&a, &span).expect("a valid body"),
+                &placed_quadric(&b, &span).expect("a valid body"),
+            );
+            proptest::prop_assert_eq!(CharPoly::of_static(&a, &b), Some(placed));
+        }
     }
 
     #[test]
