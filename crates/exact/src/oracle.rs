@@ -192,10 +192,12 @@ impl<'s> Exact<'s> {
     }
 
     /// The placements (formed on first need for a static pair, whose
-    /// placement [`Exact::new`] skipped: a constant one never degenerates).
+    /// placement [`Exact::new`] skipped: `placed_quadric` has no error case
+    /// for a static body, whose frame is constant).
     fn bodies(&self) -> &Bodies<'s> {
         self.bodies.get_or_init(|| {
-            placed_bodies(self.scene, self.digits).expect("a static placement never degenerates")
+            placed_bodies(self.scene, self.digits)
+                .expect("a static body's placement has no error case")
         })
     }
 

@@ -94,11 +94,13 @@ impl Coefficients {
     pub(crate) fn polynomial(&self, q: Quantity) -> &ZPoly {
         self.polys[slot(q)].get_or_init(|| {
             let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
-            (homogeneous_degree(q) * bits <= SMALL_BITS)
-                .then(|| closed_form(&self.f.coeffs.each_ref().map(SmallPoly::lowered), q))
-                .flatten()
-                .and_then(|p| p.to_zpoly())
-                .unwrap_or_else(|| closed_form(&self.f.coeffs, q).expect("a closed form, not Var"))
+            if homogeneous_degree(q) * bits <= SMALL_BITS {
+                let small = self.f.coeffs.each_ref().map(SmallPoly::lowered);
+                if let Some(p) = closed_form(&small, q).and_then(|p| p.to_zpoly()) {
+                    return p;
+                }
+            }
+            closed_form(&self.f.coeffs, q).expect("a closed form, not Var")
         })
     }
 
