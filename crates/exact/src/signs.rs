@@ -17,14 +17,18 @@
 //!   values `2^(jn)·(f_k(m), f_k′(m))` at `m = a/2^j` (so the result is
 //!   `2^(jnw)·(q(m), q′(m))`), for degree-`n` polynomials `f_k` with
 //!   coefficients far shorter than those of the degree-`4n`/`6n` forms;
-//! * `q` itself only if a zero has to be decided (rare; formed once).
+//! * `q mod p` for one word prime `p`: over [`Residues`] of the `f_k`; it
+//!   usually proves `gcd(sr0, q) = 1`, hence `q(α) ≠ 0`, when `q(α)` is
+//!   too small for the enclosures to tell from zero;
+//! * `q` itself only if a zero has to be decided and the image cannot
+//!   prove it away (rare; formed once).
 //!
 //! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
 //! products of the closed forms).
 
 use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_motion::CharPoly;
-use ccd_poly::{SmallPoly, ZPoly};
+use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, homogeneous_degree, isobaric_weight, Quantity};
 use std::cell::RefCell;
@@ -382,6 +386,22 @@ impl SignModel for ClosedForm {
     fn exact(&self) -> &ZPoly {
         self.f.polynomial(self.q)
     }
+
+    /// `q mod p` from the images of the `f_k` (the closed form over
+    /// [`Residues`]: no integer larger than a word), unless `q` is already
+    /// formed. Its degree is `q`'s when it is the nominal `w·n`: the image
+    /// of the coefficient of `t^(w·n)` is nonzero, so that coefficient is
+    /// too, and `deg q ≤ w·n`.
+    fn residues(&self) -> (Residues, bool) {
+        if let Some(q) = self.f.polys[slot(self.q)].get() {
+            let r = Residues::of(q);
+            let kept = r.degree() == q.degree();
+            return (r, kept);
+        }
+        let r = self.of(&self.f.f.coeffs.each_ref().map(Residues::of));
+        let kept = r.degree() == Some(homogeneous_degree(self.q) as usize * self.f.f.degree());
+        (r, kept)
+    }
 }
 
 #[cfg(test)]
@@ -442,6 +462,11 @@ mod tests {
             for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10] {
                 let model = model(&f, q);
                 let exact = inv.get(q).expect("a polynomial");
+                // The image modulo the word prime from the f_k's images
+                // (before q is formed) is q's, and a degree it claims kept is q's.
+                let (image, kept) = model.residues();
+                prop_assert_eq!(&image, &Residues::of(exact));
+                prop_assert!(!kept || image.degree() == exact.degree());
                 prop_assert_eq!(model.exact(), exact);
                 prop_assert_eq!(model.sign_at(&x), exact.sign_at(&x));
                 let sigma = |v: Rat| v.mul_pow2(-f.shift * weight(q));

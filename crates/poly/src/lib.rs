@@ -24,12 +24,14 @@ pub mod mul;
 mod ntt;
 mod prime;
 mod qpoly;
+mod residue;
 mod small;
 mod zpoly;
 
 pub use bernstein::{bernstein_to_power, binomials, Bernstein};
 pub use bernstein_f64::BernsteinF64;
 pub use qpoly::QPoly;
+pub use residue::Residues;
 pub use small::SmallPoly;
 pub use zpoly::ZPoly;
 

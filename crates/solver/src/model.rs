@@ -5,7 +5,7 @@
 
 use crate::scaled::ScaledPoly;
 use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
-use ccd_poly::ZPoly;
+use ccd_poly::{Residues, ZPoly};
 use std::sync::{Arc, OnceLock};
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
@@ -170,6 +170,17 @@ pub trait SignModel {
     }
     /// `q` exactly.
     fn exact(&self) -> &ZPoly;
+    /// `q` modulo the fixed word prime of [`Residues`], and whether its
+    /// degree is proven to be `q`'s (the prime does not divide `lc(q)`).
+    /// The default reduces [`SignModel::exact`]; a model that has `q` as a
+    /// function of other polynomials may form the image from theirs, so
+    /// that a coprimality proof ([`Residues::proves_coprime`]) needs no `q`.
+    fn residues(&self) -> (Residues, bool) {
+        let q = self.exact();
+        let r = Residues::of(q);
+        let kept = r.degree() == q.degree();
+        (r, kept)
+    }
 }
 
 impl<T: SignModel> SignModel for Arc<T> {
@@ -202,6 +213,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     }
     fn exact(&self) -> &ZPoly {
         (**self).exact()
+    }
+    fn residues(&self) -> (Residues, bool) {
+        (**self).residues()
     }
 }
 

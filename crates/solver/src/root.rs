@@ -435,6 +435,17 @@ impl<M: SignModel + Clone> RealRoot<M> {
         Rat::from_int(first) < &self.hi * &l
     }
 
+    /// Whether `gcd(p, q) = 1` is proven by the images of `p` and `q`
+    /// modulo one word prime ([`SignModel::residues`],
+    /// [`Residues::proves_coprime`](ccd_poly::Residues::proves_coprime)):
+    /// then `q(α) ≠ 0`, with neither `q` nor the gcd over `ℤ[t]` formed.
+    /// `false` means "not proven" (a common factor, `q ≡ 0`, or a prime
+    /// dividing `lc(p)` or the resultant), and the exact gcd decides.
+    fn coprime_by_images(&self, model: &impl SignModel) -> bool {
+        let (p, kept) = self.base.residues();
+        kept && p.proves_coprime(&model.residues().0)
+    }
+
     /// [`RealRoot::refine_to`] without the final rational-root test: what
     /// [`RealRoot::sign_with`] needs between its rounds (the test's
     /// continued fraction costs time quadratic in the ends' bits, and the
@@ -529,13 +540,16 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// Zero is decided exactly: `q(α) = 0` iff `g = gcd(p, q)` has a root in
     /// `I` (`q` from [`SignModel::exact`]; `q ≡ 0` gives `g = p`), and since
     /// `g | p` has at most the one root `α` there, that is a sign change of
-    /// `g` between the ends. Between rounds the interval is refined (each
+    /// `g` between the ends. First, though, one image modulo a word prime
+    /// usually proves `gcd(p, q) = 1` ([`SignModel::residues`]): then
+    /// `q(α) ≠ 0` without forming `q` (same answer, same rounds). Between rounds the interval is refined (each
     /// step proven by exact signs of `p`): by 16 bits in the first rounds, then
     /// by twice as many each round. docs/termination.md says why this ends.
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
-        // `Some(q)` once `q(α) ≠ 0` is proven (q formed for the gcd test).
-        let mut nonzero: Option<&ZPoly> = None;
+        // Once `q(α) ≠ 0` is proven (`q` itself is formed only if the
+        // Bernstein test below runs, or for a gcd the images cannot prove).
+        let mut nonzero = false;
         for round in 0u32.. {
             if self.sign_lo == 0 {
                 return model.sign_at(&self.lo);
@@ -576,13 +590,15 @@ impl<M: SignModel + Clone> RealRoot<M> {
                     qm.contains_zero()
                 }
             };
-            if nonzero.is_none() && (round >= 1 || value_zero) {
-                let q = model.exact();
-                let g = self.base.exact().gcd(q);
-                if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0 {
-                    return 0;
+            if !nonzero && (round >= 1 || value_zero) {
+                if !self.coprime_by_images(model) {
+                    let g = self.base.exact().gcd(model.exact());
+                    if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0
+                    {
+                        return 0;
+                    }
                 }
-                nonzero = Some(q);
+                nonzero = true;
             }
             // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
             // Bernstein coefficients over `I` decides as soon as `I` is free
@@ -592,8 +608,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // (and whenever that bound overflowed).
             let scheduled =
                 round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
-            if let Some(q) = nonzero.filter(|_| scheduled || !second.is_finite()) {
-                let b = Bernstein::from_power(q, &self.lo, &self.hi);
+            if nonzero && (scheduled || !second.is_finite()) {
+                let b = Bernstein::from_power(model.exact(), &self.lo, &self.hi);
                 if b.sign_variations() == 0 && b.sign_at_lo() != 0 {
                     return b.sign_at_lo();
                 }

@@ -1,0 +1,188 @@
+//! [`Residues`]: polynomials over the prime field `F_p` of one fixed word
+//! prime `p` (the first table prime, `p < 2^62`), as a [`RingOps`] type:
+//! a generic exact computation over `ℤ[t]` (a closed form of the
+//! subresultants) runs over `Residues` unchanged and gives the image
+//! modulo `p` of its exact result, since reduction modulo `p` is a ring
+//! homomorphism `ℤ[t] → F_p[t]` (an exact division by a small `k`, `p ∤ k`,
+//! maps to the product with `k^{-1}`).
+//!
+//! What one image proves ([`Residues::proves_coprime`]): for `P, Q ∈ ℤ[t]`
+//! with `p ∤ lc(P)` and `Q mod p ≠ 0`, if `gcd(P mod p, Q mod p) = 1` then
+//! `gcd(P, Q) = 1` over `ℚ`. Proof: let `n = deg P`, `d = deg Q` and
+//! `e = deg(Q mod p) ≤ d`. Reduction commutes with the Sylvester
+//! determinant, so `Res_{n,d}(P, Q) mod p = Res_{n,d}(P̄, Q̄) =
+//! ±lc(P̄)^(d−e)·Res(P̄, Q̄)`, nonzero since `lc(P̄) ≠ 0` and `P̄, Q̄` are
+//! coprime over the field `F_p`. So `Res(P, Q) ≠ 0`: `P` and `Q` have no
+//! common root. No condition on `Q`'s leading coefficient is needed.
+
+use crate::modular::gcd_mod_p;
+use crate::prime::{ntt_prime, Fp};
+use crate::ZPoly;
+use ccd_arith::{Int, RingOps};
+use std::sync::LazyLock;
+
+/// The field: Montgomery arithmetic modulo the first table prime.
+static FIELD: LazyLock<Fp> = LazyLock::new(|| Fp::new(ntt_prime(0).p));
+
+/// A polynomial over `F_p` (module docs), coefficients low → high in
+/// Montgomery form, without trailing zeros.
+///
+/// ```
+/// use ccd_arith::RingOps;
+/// use ccd_poly::{Residues, ZPoly};
+/// // (t − 1)(t + 2) and (t − 1)(t − 3) share t − 1; (t + 2) and (t − 3) do not.
+/// let a = ZPoly::from_i64s(&[-2, 1, 1]);
+/// let b = ZPoly::from_i64s(&[3, -4, 1]);
+/// assert!(!Residues::of(&a).proves_coprime(&Residues::of(&b)));
+/// let (c, d) = (ZPoly::from_i64s(&[2, 1]), ZPoly::from_i64s(&[-3, 1]));
+/// assert!(Residues::of(&c).proves_coprime(&Residues::of(&d)));
+/// // The image of a product is the product of the images.
+/// assert_eq!(Residues::of(&c).times(&Residues::of(&d)), Residues::of(&(&c * &d)));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Residues(Vec<u64>);
+
+impl Residues {
+    /// `p` modulo the field's prime.
+    pub fn of(p: &ZPoly) -> Residues {
+        let f = &*FIELD;
+        Residues::trimmed(p.coeffs().iter().map(|c| f.enter(c.mod_u64(f.p))).collect())
+    }
+
+    fn trimmed(mut c: Vec<u64>) -> Residues {
+        while c.last() == Some(&0) {
+            c.pop();
+        }
+        Residues(c)
+    }
+
+    /// The image of the integer `k`.
+    fn constant(k: &Int) -> Residues {
+        let f = &*FIELD;
+        Residues::trimmed(vec![f.enter(k.mod_u64(f.p))])
+    }
+
+    /// The degree (`None` for zero).
+    pub fn degree(&self) -> Option<usize> {
+        self.0.len().checked_sub(1)
+    }
+
+    /// Whether `self = P mod p` and `other = Q mod p` prove `gcd(P, Q) = 1`
+    /// (module docs), given that `self`'s degree is that of `P` (the
+    /// caller's check that `p ∤ lc(P)`): `other ≠ 0` and the gcd over `F_p`
+    /// is a nonzero constant. `false` means "not proven".
+    pub fn proves_coprime(&self, other: &Residues) -> bool {
+        !self.0.is_empty()
+            && !other.0.is_empty()
+            && gcd_mod_p(self.0.clone(), other.0.clone(), &FIELD).len() == 1
+    }
+
+    /// Coefficientwise `op`.
+    fn zip(&self, o: &Residues, op: impl Fn(&Fp, u64, u64) -> u64) -> Residues {
+        let f = &*FIELD;
+        let n = self.0.len().max(o.0.len());
+        let at = |v: &[u64], i: usize| v.get(i).copied().unwrap_or(0);
+        Residues::trimmed((0..n).map(|i| op(f, at(&self.0, i), at(&o.0, i))).collect())
+    }
+}
+
+impl RingOps for Residues {
+    fn zero() -> Self {
+        Residues(Vec::new())
+    }
+    fn one() -> Self {
+        Residues::from_i64(1)
+    }
+    fn from_i64(v: i64) -> Self {
+        Residues::constant(&Int::from_i64(v))
+    }
+    fn is_zero(&self) -> bool {
+        self.0.is_empty()
+    }
+    fn plus(&self, o: &Self) -> Self {
+        self.zip(o, Fp::add)
+    }
+    fn minus(&self, o: &Self) -> Self {
+        self.zip(o, Fp::sub)
+    }
+    fn times(&self, o: &Self) -> Self {
+        if self.0.is_empty() || o.0.is_empty() {
+            return Residues::zero();
+        }
+        let f = &*FIELD;
+        let mut c = vec![0u64; self.0.len() + o.0.len() - 1];
+        for (i, &x) in self.0.iter().enumerate() {
+            if x == 0 {
+                continue;
+            }
+            for (slot, &y) in c[i..].iter_mut().zip(&o.0) {
+                *slot = f.add(*slot, f.mul(x, y));
+            }
+        }
+        // A field has no zero divisors: the top coefficient is nonzero.
+        Residues(c)
+    }
+    fn negated(&self) -> Self {
+        Residues(self.0.iter().map(|&x| FIELD.neg(x)).collect())
+    }
+    /// The product with `k^{-1}` (`k` small and nonzero, so `p ∤ k`): the
+    /// image of the exact quotient whenever `k` divides the integer value.
+    fn div_small(&self, k: i64) -> Self {
+        let f = &*FIELD;
+        let k = Residues::constant(&Int::from_i64(k));
+        let inv = f.inv(k.0[0]);
+        Residues(self.0.iter().map(|&x| f.mul(x, inv)).collect())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn poly(c: &[i64]) -> ZPoly {
+        ZPoly::from_i64s(c)
+    }
+
+    proptest! {
+        /// Reduction is a ring homomorphism on the operations closed forms use.
+        #[test]
+        fn reduction_commutes_with_ring_operations(
+            a in proptest::collection::vec(any::<i64>(), 0..8),
+            b in proptest::collection::vec(any::<i64>(), 0..8),
+            k in prop_oneof![-12i64..=-1, 1i64..=12],
+        ) {
+            let (a, b) = (poly(&a), poly(&b));
+            let (ra, rb) = (Residues::of(&a), Residues::of(&b));
+            prop_assert_eq!(ra.plus(&rb), Residues::of(&(&a + &b)));
+            prop_assert_eq!(ra.minus(&rb), Residues::of(&(&a - &b)));
+            prop_assert_eq!(ra.times(&rb), Residues::of(&(&a * &b)));
+            prop_assert_eq!(ra.negated(), Residues::of(&(-&a)));
+            let ak = &a * &poly(&[k]);
+            prop_assert_eq!(Residues::of(&ak).div_small(k), ra);
+        }
+
+        /// A proof of coprimality is never wrong: a common factor `c` of
+        /// positive degree is never proven away, and coprime pairs (by the
+        /// exact gcd) are proven whenever the image keeps `P`'s degree and
+        /// the images are coprime.
+        #[test]
+        fn coprime_proofs_agree_with_the_exact_gcd(
+            a in proptest::collection::vec(-9i64..=9, 1..6),
+            b in proptest::collection::vec(-9i64..=9, 1..6),
+            c in proptest::collection::vec(-9i64..=9, 2..4),
+        ) {
+            let (a, b, c) = (poly(&a), poly(&b), poly(&c));
+            prop_assume!(c.degree().unwrap_or(0) >= 1 && !a.is_zero());
+            let (p, q) = (&a * &c, &b * &c);
+            prop_assert!(!Residues::of(&p).proves_coprime(&Residues::of(&q)));
+            let proven = Residues::of(&a).proves_coprime(&Residues::of(&b));
+            let exact = !b.is_zero() && a.gcd(&b).degree() == Some(0);
+            // Small coefficients: p divides no leading coefficient nor the
+            // resultant of a and b (below (9·√6)^10 < 2^45 < p by Hadamard's
+            // bound), so the images keep the gcd's degree: proofs and
+            // truth agree.
+            prop_assert_eq!(proven, exact);
+        }
+    }
+}
