@@ -447,12 +447,12 @@ impl PlacedQuadric {
         };
         // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
         let centred = congruence(&blocks, &self.diagonal.each_ref().map(|e| e.coeff(0)));
-        Some(Centred {
-            k: std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
-            kappa: -&centred[3][3],
-            centre: center.map(|c| ZPoly::new(c.to_vec())),
-            denominator: w,
-        })
+        Some(Centred::new(
+            std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
+            -&centred[3][3],
+            center.map(|c| ZPoly::new(c.to_vec())),
+            w,
+        ))
     }
 
     /// The quadric at one parameter `u`, exactly, scaled to integers (a
