@@ -222,6 +222,9 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
 /// `p/q = s_A/s_B` in lowest terms: `det(λA + B)` up to a positive
 /// constant from `det(λA/s_A + B/s_B)` ([`centred_characteristic`]).
 fn rescale_lambda(f: [ZPoly; 5], s_a: &Int, s_b: &Int) -> [ZPoly; 5] {
+    if s_a == s_b {
+        return f;
+    }
     let g = s_a.gcd(s_b);
     let (p, q) = (s_a.div_exact(&g), s_b.div_exact(&g));
     let powers = |x: &Int| -> [Int; 5] {
