@@ -48,6 +48,12 @@ impl SmallInt {
         Some(i64::try_from(v).map_or_else(|_| Int::from_i128(v), Int::from_i64))
     }
 
+    /// The exact value as an `i128`, `None` if an operation overflowed.
+    #[inline]
+    pub fn to_i128(&self) -> Option<i128> {
+        self.exact()
+    }
+
     /// The value, `None` when overflowed.
     #[inline]
     fn exact(self) -> Option<i128> {

@@ -35,14 +35,51 @@ use ccd_quadric::{adj3, det3, Mat3};
 /// A body that does not turn, as the frame of its own centre sees it.
 #[derive(Clone, Debug)]
 pub(crate) struct Centred {
-    /// `K = XᵀD₃X`: the integer quadric's constant 3×3 block.
+    /// `K = XᵀD₃X`, divided by [`Centred::scale`]: the integer quadric's
+    /// constant 3×3 block.
     pub(crate) k: Mat3<Int>,
-    /// `κ = −d₄·z² > 0`: minus the integer quadric's corner at its centre.
+    /// `κ = −d₄·z² > 0`, divided by [`Centred::scale`]: minus the integer
+    /// quadric's corner at its centre.
     pub(crate) kappa: Int,
+    /// The common content `s > 0` of `K` and `κ` taken out of them: the
+    /// quadric at the centre is `s·[[k, 0], [0, −kappa]]`.
+    pub(crate) scale: Int,
     /// The centre curve `c(u)` times [`Centred::denominator`].
     pub(crate) centre: [ZPoly; 3],
     /// The centre curve's denominator (a nonzero integer).
     pub(crate) denominator: Int,
+}
+
+impl Centred {
+    /// The body with block `k` (symmetric), corner `−kappa` (`kappa > 0`),
+    /// centre curve `centre/denominator`; `k` and `kappa` are stored
+    /// divided by their common content ([`Centred::scale`]).
+    pub(crate) fn new(k: Mat3<Int>, kappa: Int, centre: [ZPoly; 3], denominator: Int) -> Centred {
+        let mut scale = kappa.abs();
+        for (i, row) in k.iter().enumerate() {
+            for x in &row[i..] {
+                if scale.is_one() {
+                    break;
+                }
+                scale = scale.gcd(x);
+            }
+        }
+        let (k, kappa) = if scale.is_one() || scale.is_zero() {
+            (k, kappa)
+        } else {
+            (
+                k.map(|row| row.map(|x| x.div_exact(&scale))),
+                kappa.div_exact(&scale),
+            )
+        };
+        Centred {
+            k,
+            kappa,
+            scale,
+            centre,
+            denominator,
+        }
+    }
 }
 
 /// `Σ_ij m_ij·x_ij`: the trace of `m·x` for a symmetric `x`.
@@ -99,16 +136,37 @@ fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
 ///
 /// The outer coefficients are constants: with `b = K_B·e`,
 /// `bᵀ·adj K_B·b = det K_B·eᵀK_B·e` (`K·adj K·K = det K·K`), so
-/// `c_0 = det K_B·s₀ − bᵀ·adj K_B·b = −δ²κ_B·det K_B` and
+/// `c_0 = −δ²κ_B·det K_B` and
 /// `c_4 = −δ²κ_A·det K_A` (the determinants of the two constant quadrics).
+///
+/// The numbers are kept short by positive constants the normalisation's
+/// content removal takes out anyway: `(e, δ)` divided by their common
+/// content `h` (the formula is homogeneous of degree 2 in them, so `f`
+/// is divided by `h²`), and each body's `K, κ` by theirs, `s_A` and `s_B`
+/// ([`Centred::scale`]). The latter rescales λ: `det(λA/s_A + B/s_B)` has
+/// coefficients `c_k/(s_A^k·s_B^(4−k))`, so each is multiplied back by
+/// `p^k·q^(4−k)` with `p/q = s_A/s_B` in lowest terms (a positive
+/// constant times `c_k`).
 pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
-    // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B
-    // (only δ² enters).
+    // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B,
+    // both divided by their common content (only δ² enters).
     let minus_wb = -&b.denominator;
     let e: [ZPoly; 3] = std::array::from_fn(|i| {
         combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
     });
     let delta = &a.denominator * &b.denominator;
+    let h = e.iter().fold(delta.abs(), |g, p| {
+        if g.is_one() {
+            g
+        } else {
+            g.gcd(&p.content())
+        }
+    });
+    let (e, delta) = if h.is_one() {
+        (e, delta)
+    } else {
+        (e.map(|p| p.div_exact_int(&h)), delta.div_exact(&h))
+    };
     // b = K_B·e and the products b_i·b_j.
     let kb_e: [ZPoly; 3] =
         std::array::from_fn(|i| combination((0..3).map(|j| (&b.k[i][j], &e[j]))));
@@ -150,13 +208,42 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
         };
         &ck - &ZPoly::constant(&da * &p[k - 1])
     };
-    [
+    let f = [
         ZPoly::constant(-&(&da * &p[3])),
         c(3),
         c(2),
         c(1),
         ZPoly::constant(-&(&(&delta2 * &b.kappa) * &p[0])),
-    ]
+    ];
+    rescale_lambda(f, &a.scale, &b.scale)
+}
+
+/// `c_k·p^k·q^(4−k)` for `[c_4, …, c_0]` (high → low in λ), with
+/// `p/q = s_A/s_B` in lowest terms: `det(λA + B)` up to a positive
+/// constant from `det(λA/s_A + B/s_B)` ([`centred_characteristic`]).
+fn rescale_lambda(f: [ZPoly; 5], s_a: &Int, s_b: &Int) -> [ZPoly; 5] {
+    if s_a == s_b {
+        return f;
+    }
+    let g = s_a.gcd(s_b);
+    let (p, q) = (s_a.div_exact(&g), s_b.div_exact(&g));
+    let powers = |x: &Int| -> [Int; 5] {
+        let mut out: [Int; 5] = std::array::from_fn(|_| Int::one());
+        for k in 1..5 {
+            out[k] = &out[k - 1] * x;
+        }
+        out
+    };
+    let (pp, qp) = (powers(&p), powers(&q));
+    let mut f = f;
+    for (i, c) in f.iter_mut().enumerate() {
+        // c = c_k with k = 4 − i.
+        let factor = &pp[4 - i] * &qp[i];
+        if !factor.is_one() {
+            *c = c.mul_int(&factor);
+        }
+    }
+    f
 }
 
 #[cfg(test)]

@@ -431,7 +431,7 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
         }
     }
     // The common integer content (a positive constant).
-    let g = c.iter().fold(Int::zero(), |g, p| g.gcd(&p.content()));
+    let g = ZPoly::common_content(&c);
     if !g.is_zero() && !g.is_one() {
         for p in c.iter_mut() {
             *p = p.div_exact_int(&g);

@@ -4,6 +4,7 @@
 use crate::kinds::Bezier;
 use ccd_arith::{Int, Rat, Ring, RingOps, SmallInt};
 use ccd_poly::{bernstein_to_power, ZPoly};
+use std::borrow::Cow;
 
 /// The exact integer types the motion's numbers are brought to: [`Int`],
 /// and [`SmallInt`] (an `i128` that overflows) for a route that runs over
@@ -86,27 +87,122 @@ pub struct PolyCurve<const N: usize> {
 /// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`): with `L`
 /// the lcm of the denominators of every `wᵢ·Pᵢ` and `wᵢ`, numerator `k` is
 /// `Σ Bᵢⁿ(u)·(L·wᵢ·Pᵢ[k])` and the denominator `Σ Bᵢⁿ(u)·(L·wᵢ)`, both in
-/// ℤ[u] ([`bernstein_to_power`]: additions only, no rational arithmetic).
+/// ℤ[u] (no rational arithmetic). In `i128` ([`SmallInt`]) when every
+/// number on the way fits, else over [`Int`] ([`bernstein_to_power`]):
+/// the same polynomials.
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
-    let weights: Vec<Rat> = match &curve.weights {
-        Some(w) => w.clone(),
-        None => vec![Rat::one(); curve.points.len()],
+    // Borrowed where no product is needed (no weights).
+    let one = Rat::one();
+    let weights: Vec<Cow<Rat>> = match &curve.weights {
+        Some(w) => w.iter().map(Cow::Borrowed).collect(),
+        None => vec![Cow::Borrowed(&one); curve.points.len()],
     };
-    let values: [Vec<Rat>; N] = std::array::from_fn(|k| match &curve.weights {
-        Some(w) => curve.points.iter().zip(w).map(|(p, w)| &p[k] * w).collect(),
-        None => curve.points.iter().map(|p| p[k].clone()).collect(),
+    let values: [Vec<Cow<Rat>>; N] = std::array::from_fn(|k| match &curve.weights {
+        Some(w) => curve
+            .points
+            .iter()
+            .zip(w)
+            .map(|(p, w)| Cow::Owned(&p[k] * w))
+            .collect(),
+        None => curve.points.iter().map(|p| Cow::Borrowed(&p[k])).collect(),
     });
-    let den: Int = common_denominator(values.iter().flatten().chain(&weights));
-    let scaled = |v: &[Rat]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
+    small_poly_curve(&values, &weights).unwrap_or_else(|| exact_poly_curve(&values, &weights))
+}
+
+/// [`to_poly_curve`] of the values `wᵢ·Pᵢ[k]` and weights `wᵢ` over [`Int`].
+fn exact_poly_curve<const N: usize>(
+    values: &[Vec<Cow<Rat>>; N],
+    weights: &[Cow<Rat>],
+) -> PolyCurve<N> {
+    let den: Int = common_denominator(values.iter().flatten().chain(weights).map(|x| &**x));
+    let scaled =
+        |v: &[Cow<Rat>]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
     PolyCurve {
         numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),
-        denominator: bernstein_to_power(&scaled(&weights)),
+        denominator: bernstein_to_power(&scaled(weights)),
     }
+}
+
+/// [`to_poly_curve`] over [`SmallInt`]: `None` if a number does not fit
+/// (or the degree is beyond the binomials' `i64` range).
+fn small_poly_curve<const N: usize>(
+    values: &[Vec<Cow<Rat>>; N],
+    weights: &[Cow<Rat>],
+) -> Option<PolyCurve<N>> {
+    let n = weights.len().checked_sub(1)?;
+    if n > 60 {
+        return None;
+    }
+    let den: SmallInt = common_denominator(values.iter().flatten().chain(weights).map(|x| &**x));
+    den.to_i128()?;
+    // C(k, i) for k ≤ n, a row at a time (Pascal), as SmallInts.
+    let mut pascal: Vec<Vec<SmallInt>> = Vec::with_capacity(n + 1);
+    for k in 0..=n {
+        let row = (0..=k)
+            .map(|i| match i {
+                0 => SmallInt::one(),
+                _ if i == k => SmallInt::one(),
+                _ => pascal[k - 1][i - 1].plus(&pascal[k - 1][i]),
+            })
+            .collect();
+        pascal.push(row);
+    }
+    // Σ bᵢ·Bᵢⁿ(u) = Σ_k C(n, k)·(Σ_(i≤k) (−1)^(k−i)·C(k, i)·bᵢ)·u^k.
+    let power = |v: &[Cow<Rat>]| -> Option<ZPoly> {
+        let b: Vec<SmallInt> = v.iter().map(|x| times_denominator(x, &den)).collect();
+        let coeffs: Option<Vec<Int>> = (0..=n)
+            .map(|k| {
+                let mut s = SmallInt::zero();
+                for (i, bi) in b.iter().enumerate().take(k + 1) {
+                    s.add_product(&pascal[k][i], bi, (k - i) % 2 == 1);
+                }
+                s.times(&pascal[n][k]).to_int()
+            })
+            .collect();
+        Some(ZPoly::new(coeffs?))
+    };
+    let numerators: Vec<ZPoly> = values.iter().map(|v| power(v)).collect::<Option<_>>()?;
+    Some(PolyCurve {
+        numerators: numerators.try_into().ok()?,
+        denominator: power(weights)?,
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The `i128` route gives the `Int` route's polynomials, and
+        /// declines (rather than overflowing) on long numbers.
+        #[test]
+        fn small_route_is_the_exact_route(
+            points in proptest::collection::vec((-1_000_000_000i64..1_000_000_000, 1i64..20), 3..18),
+            weights in proptest::collection::vec(1i64..1000, 6),
+            weighted in proptest::bool::ANY,
+            long in 0u32..4,
+        ) {
+            let scale = Rat::from_int(Int::from(10).pow(13 * long));
+            let count = points.len() / 3;
+            let values: [Vec<Cow<Rat>>; 3] = std::array::from_fn(|k| {
+                (0..count).map(|i| {
+                    let (n, d) = points[3 * i + k];
+                    let w = if weighted { Rat::from_frac(weights[i % 6], 7) } else { Rat::one() };
+                    Cow::Owned(&(&Rat::from_frac(n, d) * &scale) * &w)
+                }).collect()
+            });
+            let w: Vec<Cow<Rat>> = (0..count)
+                .map(|i| Cow::Owned(if weighted { Rat::from_frac(weights[i % 6], 7) } else { Rat::one() }))
+                .collect();
+            let exact = exact_poly_curve(&values, &w);
+            if let Some(small) = small_poly_curve(&values, &w) {
+                proptest::prop_assert_eq!(&small.numerators, &exact.numerators);
+                proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
+            } else {
+                proptest::prop_assert!(long > 0, "short numbers fit");
+            }
+        }
+    }
 
     #[test]
     fn power_form_interpolates_the_ends_and_midpoint() {

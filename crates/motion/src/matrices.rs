@@ -6,7 +6,7 @@ use crate::centred::Centred;
 use crate::curve::{common_denominator, times_denominator, to_poly_curve, Integer, PolyCurve};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat, Vec3};
-use ccd_arith::{Int, Rat, RingOps};
+use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, congruence, det3, integral, norm2,
@@ -290,16 +290,20 @@ pub(crate) fn static_quadric<I: Integer>(radii: &[Rat; 3], center: &Vec3, q: &Qu
     let one = Rat::one();
     let [x, y, z, w] = rat_vec_to_int([&center[0], &center[1], &center[2], &one]);
     let n = rigid_inverse(&rotation_numerator(&q), &norm2(&q), &[x, y, z], &w);
+    congruence(&primitive_constant(n), &integer_diagonal(radii))
+}
+
+/// A constant matrix divided by the gcd of its entries: what
+/// [`primitive_matrix`] does to constant polynomials.
+fn primitive_constant<I: Integer>(n: Mat4<I>) -> Mat4<I> {
     let g = n
         .iter()
         .flatten()
         .fold(I::zero(), |g, e| if g.is_one() { g } else { g.gcd(e) });
-    let n = if g.is_zero() || g.is_one() {
-        n
-    } else {
-        n.map(|row| row.map(|e| e.div_exact(&g)))
-    };
-    congruence(&n, &integer_diagonal(radii))
+    if g.is_zero() || g.is_one() {
+        return n;
+    }
+    n.map(|row| row.map(|e| e.div_exact(&g)))
 }
 
 /// A placed body: its placement, its body quadric and what is known about
@@ -333,6 +337,18 @@ impl PlacedQuadric {
     /// inverse placement made primitive, then `NᵀDN`), without big-integer
     /// arithmetic.
     pub fn quadric_small(&self) -> Option<Mat4<SmallPoly>> {
+        if self.degree_bounds() == (0, 0) {
+            // A constant frame (a static body): the same matrix over
+            // `i128` numbers rather than constant polynomials.
+            let constant = |p: &ZPoly| SmallInt::of(&p.coeff(0));
+            let n = primitive_constant(self.frame.map(constant).inverse());
+            let q = congruence(&n, &self.diagonal.each_ref().map(constant));
+            return q
+                .iter()
+                .flatten()
+                .all(|e| e.to_i128().is_some())
+                .then(|| q.map(|row| row.map(|e| SmallPoly::constant(&e))));
+        }
         let n = self.frame.map(SmallPoly::lowered).inverse();
         let g = n.iter().flatten().try_fold(0, |g, e| e.gcd_with(g))?;
         let n = if g > 1 {
@@ -447,12 +463,12 @@ impl PlacedQuadric {
         };
         // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
         let centred = congruence(&blocks, &self.diagonal.each_ref().map(|e| e.coeff(0)));
-        Some(Centred {
-            k: std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
-            kappa: -&centred[3][3],
-            centre: center.map(|c| ZPoly::new(c.to_vec())),
-            denominator: w,
-        })
+        Some(Centred::new(
+            std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
+            -&centred[3][3],
+            center.map(|c| ZPoly::new(c.to_vec())),
+            w,
+        ))
     }
 
     /// The quadric at one parameter `u`, exactly, scaled to integers (a

@@ -12,7 +12,7 @@
 //! big-integer allocations.
 
 use crate::ZPoly;
-use ccd_arith::{Int, RingOps};
+use ccd_arith::{Int, RingOps, SmallInt};
 
 /// Coefficient slots: degrees up to [`SmallPoly::MAX_DEGREE`].
 const CAP: usize = 17;
@@ -82,6 +82,18 @@ impl SmallPoly {
     /// computation on it reports the overflow at the end).
     pub fn lowered(p: &ZPoly) -> SmallPoly {
         SmallPoly::build(p.coeffs().iter().map(Int::to_i128), p.coeffs().len())
+    }
+
+    /// The constant `x` (overflowed when `x` is).
+    pub fn constant(x: &SmallInt) -> SmallPoly {
+        match x.to_i128() {
+            Some(v) => {
+                let mut c = [0; CAP];
+                c[0] = v;
+                SmallPoly::from_array(c, 1)
+            }
+            None => SmallPoly::overflowed(),
+        }
     }
 
     /// `p` if its degree and coefficients fit.

@@ -25,11 +25,12 @@ pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
 
 /// `gcd` of the entries, `≥ 0` (`0` when all vanish), stopping as soon as
 /// the running gcd is `1`.
-pub(crate) fn content_of(c: &[Int]) -> Int {
+pub(crate) fn content_of<'a>(c: impl IntoIterator<Item = &'a Int, IntoIter: Clone>) -> Int {
+    let c = c.into_iter();
     // Machine integers when every entry fits (the usual case for the
     // characteristic polynomial of decimal scenes).
     let mut g = Some(0u128);
-    for x in c {
+    for x in c.clone() {
         g = g
             .zip(x.to_i128())
             .map(|(g, v)| gcd_u128(g, v.unsigned_abs()));
@@ -43,7 +44,7 @@ pub(crate) fn content_of(c: &[Int]) -> Int {
     // Start from the smallest coefficient (the gcd divides it), and reduce
     // each larger coefficient modulo the running gcd before the gcd itself:
     // one division instead of a binary gcd on full-size numbers.
-    let Some(smallest) = c.iter().filter(|x| !x.is_zero()).min_by_key(|x| x.bits()) else {
+    let Some(smallest) = c.clone().filter(|x| !x.is_zero()).min_by_key(|x| x.bits()) else {
         return Int::zero();
     };
     let mut g = smallest.abs();
@@ -164,6 +165,19 @@ impl ZPoly {
     /// polynomial); stops as soon as the running gcd is `1`.
     pub fn content(&self) -> Int {
         content_of(&self.c)
+    }
+    /// The common content of several polynomials: the gcd of all their
+    /// coefficients, `≥ 0` (`0` when all vanish), equal to the gcd of
+    /// their [`ZPoly::content`]s but formed in one pass that starts from
+    /// the shortest coefficient and stops at `1`.
+    ///
+    /// ```
+    /// use ccd_poly::ZPoly;
+    /// let (p, q) = (ZPoly::from_i64s(&[12, 18]), ZPoly::from_i64s(&[0, 8]));
+    /// assert_eq!(ZPoly::common_content(&[p, q]), ccd_arith::Int::from(2));
+    /// ```
+    pub fn common_content(polys: &[ZPoly]) -> Int {
+        content_of(polys.iter().flat_map(|p| p.c.iter()))
     }
     /// `p / (±content)`, with positive leading coefficient; zero stays zero.
     pub fn primitive_part(&self) -> ZPoly {
