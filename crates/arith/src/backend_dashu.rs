@@ -1,6 +1,7 @@
 //! The dashu big-integer kernel (pure Rust), the default (ccd-arith's
 //! `dashu` feature). Numbers of up to 128 bits live inline, without a heap
-//! buffer.
+//! buffer. With the `gmp` feature it stays the kernel, and long products,
+//! gcds and divisions go to GMP (`backend_gmp`).
 //!
 //! dashu panics where the other kernels answer: `gcd(0, 0)` (num-bigint and
 //! GMP give 0) and `IBig % u64` on a negative remainder (it converts the
@@ -29,11 +30,15 @@ pub(crate) fn bits(a: &Inner) -> u64 {
 }
 #[inline]
 pub(crate) fn div_rem_trunc(a: &Inner, b: &Inner) -> (Inner, Inner) {
+    #[cfg(feature = "gmp")]
+    if crate::backend_gmp::both_long(a, b) {
+        return crate::backend_gmp::div_rem_trunc(a, b);
+    }
     a.div_rem(b)
 }
 #[inline]
 pub(crate) fn div_floor(a: &Inner, b: &Inner) -> Inner {
-    let (q, r) = a.div_rem(b);
+    let (q, r) = div_rem_trunc(a, b);
     // The truncated remainder has the dividend's sign: step down when it
     // is non-zero and disagrees with the divisor's.
     if !r.is_zero() && (r.sign() != b.sign()) {
@@ -51,6 +56,10 @@ pub(crate) fn gcd(a: &Inner, b: &Inner) -> Inner {
     } else if b.is_zero() {
         a.abs()
     } else {
+        #[cfg(feature = "gmp")]
+        if crate::backend_gmp::both_long(a, b) {
+            return crate::backend_gmp::gcd(a, b);
+        }
         IBig::from(a.gcd(b))
     }
 }

@@ -1,6 +1,7 @@
 //! [`Int`]: an arbitrary-precision integer whose kernel is chosen at build
-//! time (dashu by default, num-bigint with the `num-kernel` feature, GMP
-//! through rug with the `gmp` feature).
+//! time (dashu by default, num-bigint with the `num-kernel` feature; the
+//! `gmp` feature keeps dashu and runs long products, gcds and divisions in
+//! GMP through rug).
 //!
 //! Every crate above this one sees only [`Int`]; the three kernels pass the
 //! same tests.

@@ -12,7 +12,7 @@
 #![warn(missing_docs)]
 
 mod approx;
-#[cfg(all(feature = "dashu", not(any(feature = "gmp", feature = "num-kernel"))))]
+#[cfg(any(feature = "gmp", all(feature = "dashu", not(feature = "num-kernel"))))]
 mod backend_dashu;
 #[cfg(feature = "gmp")]
 mod backend_gmp;
@@ -43,10 +43,8 @@ pub use ring::{Ring, RingOps};
 pub use small::SmallInt;
 
 // The big-integer kernel of this build, whose functions `Int` wraps.
-#[cfg(all(feature = "dashu", not(any(feature = "gmp", feature = "num-kernel"))))]
+#[cfg(any(feature = "gmp", all(feature = "dashu", not(feature = "num-kernel"))))]
 use backend_dashu as kernel;
-#[cfg(feature = "gmp")]
-use backend_gmp as kernel;
 #[cfg(all(
     not(feature = "gmp"),
     any(not(feature = "dashu"), feature = "num-kernel")
@@ -54,7 +52,8 @@ use backend_gmp as kernel;
 use backend_num as kernel;
 
 /// The name of the big-integer kernel in this build: `"num-bigint"`,
-/// `"dashu"` or `"gmp"`.
+/// `"dashu"` or `"gmp"` (dashu, with long products, gcds and divisions in
+/// GMP).
 pub const BACKEND: &str = if cfg!(feature = "gmp") {
     "gmp"
 } else if cfg!(feature = "dashu") && !cfg!(feature = "num-kernel") {
