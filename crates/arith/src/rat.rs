@@ -167,8 +167,18 @@ impl Rat {
         let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
         // Scale so both parts fit comfortably in f64 before dividing.
         let s = (nb - db).clamp(-1100, 1100);
-        let shifted = self.mul_pow2(60 - s);
-        let q = shifted.num.div_trunc(&shifted.den);
+        // q = self·2^(60 − s) truncated: for a dyadic num/2^k one shift of
+        // num by 60 − s − k (rounding towards zero), else a division.
+        let q = match self.dyadic_exponent() {
+            Some(k) => match 60 - s - k as i64 {
+                e if e >= 0 => self.num.shl(e as u64),
+                e => self.num.shr_round(e.unsigned_abs(), self.num.is_negative()),
+            },
+            None => {
+                let shifted = self.mul_pow2(60 - s);
+                shifted.num.div_trunc(&shifted.den)
+            }
+        };
         // `2^(s − 60)` in two factors, each a normal power of two (one
         // factor underflows or overflows where the value need not).
         let e = (s - 60) as i32;
@@ -328,6 +338,16 @@ mod tests {
                 let cross = if negate { -cross } else { cross };
                 Rat::new(&p.num * &q.den + cross, &p.den * &q.den).expect("nonzero")
             };
+            // to_f64 as it was: one truncating division of the scaled value.
+            let approx = |p: &Rat| {
+                let s = (p.num.bits() as i64 - p.den.bits() as i64).clamp(-1100, 1100);
+                let shifted = p.mul_pow2(60 - s);
+                let e = (s - 60) as i32;
+                shifted.num.div_trunc(&shifted.den).to_f64() * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
+            };
+            for p in [&x, &y, &z, &-&x, &x.mul_pow2(-900), &y.mul_pow2(1200)] {
+                prop_assert_eq!(p.to_f64().to_bits(), approx(p).to_bits());
+            }
             let order = |p: &Rat, q: &Rat| (&p.num * &q.den).cmp(&(&q.num * &p.den));
             for (p, q) in [(&x, &y), (&y, &x), (&x, &z), (&z, &y), (&x, &x), (&y, &y.mul_pow2(1))] {
                 prop_assert_eq!(p + q, reference(p, q, false));
