@@ -18,6 +18,30 @@ pub struct Interval {
     pub hi: f64,
 }
 
+/// `x.next_up()`, bit for bit, in a few integer operations instead of the
+/// standard library's chain of tests: `−0` is first made `+0` (adding
+/// `+0` changes nothing else), and NaN and `+∞` are returned as they are;
+/// otherwise the next float up is one step of the bit pattern, away from
+/// zero for `+0` and positive floats, towards it for negative ones (from
+/// `−∞` to `−MAX` too).
+#[inline]
+fn up(x: f64) -> f64 {
+    let y = x + 0.0;
+    if y < f64::INFINITY {
+        let bits = y.to_bits();
+        f64::from_bits(bits.wrapping_add(((bits as i64 >> 63) | 1) as u64))
+    } else {
+        x
+    }
+}
+
+/// `x.next_down()`, bit for bit: `−(−x).next_up()` (negation only flips
+/// the sign bit, NaN included).
+#[inline]
+fn down(x: f64) -> f64 {
+    -up(-x)
+}
+
 /// Scales `x` by `2^k` and widens outward when the result may be inexact.
 fn scale2(x: f64, k: i64) -> (f64, f64) {
     if x == 0.0 {
@@ -34,7 +58,7 @@ fn scale2(x: f64, k: i64) -> (f64, f64) {
     if exact {
         (v, v)
     } else {
-        (v.next_down(), v.next_up())
+        (down(v), up(v))
     }
 }
 
@@ -65,9 +89,9 @@ impl Interval {
             (a, b)
         } else {
             // |x| in [m, m + 1] · 2^e.
-            let (a, _) = scale2((m as f64).next_down(), e as i64 - shift);
-            let (_, b) = scale2(((m as f64) + 1.0).next_up(), e as i64 - shift);
-            (a.next_down().max(0.0), b.next_up())
+            let (a, _) = scale2(down(m as f64), e as i64 - shift);
+            let (_, b) = scale2(up((m as f64) + 1.0), e as i64 - shift);
+            (down(a).max(0.0), up(b))
         };
         if x.is_negative() {
             Interval { lo: -hi, hi: -lo }
@@ -112,8 +136,8 @@ impl Interval {
         let lo = c.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = c.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Interval {
-            lo: lo.next_down(),
-            hi: hi.next_up(),
+            lo: down(lo),
+            hi: up(hi),
         }
     }
     /// Midpoint (not certified).
@@ -122,7 +146,7 @@ impl Interval {
     }
     /// Width `hi − lo` (rounded up).
     pub fn width(&self) -> f64 {
-        (self.hi - self.lo).next_up()
+        up(self.hi - self.lo)
     }
     /// Both ends finite (no overflow, no NaN turned into the whole line).
     pub fn is_finite(&self) -> bool {
@@ -176,12 +200,12 @@ impl Interval {
     fn widen_if_tiny(self) -> Interval {
         // Halving is exact except in the subnormal range.
         let lo = if self.lo != 0.0 && self.lo.abs() < f64::MIN_POSITIVE {
-            self.lo.next_down()
+            down(self.lo)
         } else {
             self.lo
         };
         let hi = if self.hi != 0.0 && self.hi.abs() < f64::MIN_POSITIVE {
-            self.hi.next_up()
+            up(self.hi)
         } else {
             self.hi
         };
@@ -193,14 +217,14 @@ impl Add for Interval {
     type Output = Interval;
     #[inline]
     fn add(self, o: Interval) -> Interval {
-        Interval::new((self.lo + o.lo).next_down(), (self.hi + o.hi).next_up())
+        Interval::new(down(self.lo + o.lo), up(self.hi + o.hi))
     }
 }
 impl Sub for Interval {
     type Output = Interval;
     #[inline]
     fn sub(self, o: Interval) -> Interval {
-        Interval::new((self.lo - o.hi).next_down(), (self.hi - o.lo).next_up())
+        Interval::new(down(self.lo - o.hi), up(self.hi - o.lo))
     }
 }
 impl Neg for Interval {
@@ -315,6 +339,35 @@ mod tests {
             let xr = Rat::from(x.clone());
             if let Some(l) = to_rat(i.lo) { prop_assert!(l <= xr); }
             if let Some(h) = to_rat(i.hi) { prop_assert!(xr <= h); }
+        }
+    }
+
+    /// Ordinary floats of any size and the special values.
+    fn special_f64() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            any::<f64>(),
+            -1e6f64..1e6,
+            Just(0.0),
+            Just(-0.0),
+            Just(f64::INFINITY),
+            Just(f64::NEG_INFINITY),
+            Just(f64::NAN),
+            Just(-f64::NAN),
+            Just(f64::MAX),
+            Just(-f64::MAX),
+            Just(f64::MIN_POSITIVE),
+            Just(-f64::MIN_POSITIVE),
+            Just(f64::from_bits(1)),
+            Just(-f64::from_bits(1)),
+        ]
+    }
+
+    proptest! {
+        /// The widening steps are the standard library's, bit for bit.
+        #[test]
+        fn widening_steps_are_next_up_and_down(x in special_f64()) {
+            prop_assert_eq!(up(x).to_bits(), x.next_up().to_bits(), "{}", x);
+            prop_assert_eq!(down(x).to_bits(), x.next_down().to_bits(), "{}", x);
         }
     }
 

@@ -167,8 +167,18 @@ impl Rat {
         let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
         // Scale so both parts fit comfortably in f64 before dividing.
         let s = (nb - db).clamp(-1100, 1100);
-        let shifted = self.mul_pow2(60 - s);
-        let q = shifted.num.div_trunc(&shifted.den);
+        // q = self·2^(60 − s) truncated: for a dyadic num/2^k one shift of
+        // num by 60 − s − k (rounding towards zero), else a division.
+        let q = match self.dyadic_exponent() {
+            Some(k) => match 60 - s - k as i64 {
+                e if e >= 0 => self.num.shl(e as u64),
+                e => self.num.shr_round(e.unsigned_abs(), self.num.is_negative()),
+            },
+            None => {
+                let shifted = self.mul_pow2(60 - s);
+                shifted.num.div_trunc(&shifted.den)
+            }
+        };
         // `2^(s − 60)` in two factors, each a normal power of two (one
         // factor underflows or overflows where the value need not).
         let e = (s - 60) as i32;
@@ -192,6 +202,16 @@ impl Ord for Rat {
         if self.den == o.den {
             return self.num.cmp(&o.num);
         }
+        if let (Some(a), Some(b)) = (self.dyadic_exponent(), o.dyadic_exponent()) {
+            // x/2^a against y/2^b: signs first, then |x|·2^(−a) against
+            // |y|·2^(−b) with no product and no shifted copy.
+            let (sx, sy) = (self.num.signum(), o.num.signum());
+            if sx != sy || sx == 0 {
+                return sx.cmp(&sy);
+            }
+            let by_size = self.num.cmp_abs_scaled(-(a as i64), &o.num, -(b as i64));
+            return if sx > 0 { by_size } else { by_size.reverse() };
+        }
         (&self.num * &o.den).cmp(&(&o.num * &self.den))
     }
 }
@@ -201,19 +221,42 @@ impl PartialOrd for Rat {
     }
 }
 
+impl Rat {
+    /// `self + o` (`negate == false`) or `self − o`. Over a common
+    /// denominator as is; with two dyadic denominators `2^a < 2^b`, over
+    /// `2^b` after one shift of the other numerator (no products); else
+    /// over the product of the denominators. [`Rat::reduce`] brings each
+    /// to lowest terms, so all three give the one canonical result.
+    fn sum(&self, o: &Rat, negate: bool) -> Rat {
+        let combine = |x: &Int, y: &Int| if negate { x - y } else { x + y };
+        if self.den == o.den {
+            return Rat::reduce(combine(&self.num, &o.num), self.den.clone());
+        }
+        match (self.dyadic_exponent(), o.dyadic_exponent()) {
+            (Some(a), Some(b)) if a < b => {
+                Rat::reduce(combine(&self.num.shl(b - a), &o.num), o.den.clone())
+            }
+            (Some(a), Some(b)) => {
+                Rat::reduce(combine(&self.num, &o.num.shl(a - b)), self.den.clone())
+            }
+            _ => Rat::reduce(
+                combine(&(&self.num * &o.den), &(&o.num * &self.den)),
+                &self.den * &o.den,
+            ),
+        }
+    }
+}
+
 impl Add<&Rat> for &Rat {
     type Output = Rat;
     fn add(self, o: &Rat) -> Rat {
-        if self.den == o.den {
-            return Rat::reduce(&self.num + &o.num, self.den.clone());
-        }
-        Rat::reduce(&self.num * &o.den + &o.num * &self.den, &self.den * &o.den)
+        self.sum(o, false)
     }
 }
 impl Sub<&Rat> for &Rat {
     type Output = Rat;
     fn sub(self, o: &Rat) -> Rat {
-        self + &(-o)
+        self.sum(o, true)
     }
 }
 impl Mul<&Rat> for &Rat {
@@ -277,6 +320,41 @@ mod tests {
             prop_assert_eq!(r(&x.to_string()), x.clone());
             let f = x.to_f64();
             prop_assert_eq!(Rat::from_f64_exact(f).map(|v| v.to_f64()), Some(f));
+        }
+
+        /// Sums and differences of dyadics (the shift path), of a dyadic
+        /// and a non-dyadic, and over one denominator are the sums over the
+        /// product of the denominators, in lowest terms.
+        #[test]
+        fn sums_are_over_the_product_of_denominators(
+            a in any::<i64>(), ka in 0u64..200, b in any::<i64>(), kb in 0u64..200,
+            big in 0u64..300, odd in 0i64..1000,
+        ) {
+            let x = Rat::dyadic(Int::from(a).shl(big) + Int::from(a), ka);
+            let y = Rat::dyadic(Int::from(b), kb);
+            let z = Rat::from_frac(b, 2 * odd + 3);
+            let reference = |p: &Rat, q: &Rat, negate: bool| {
+                let cross = &q.num * &p.den;
+                let cross = if negate { -cross } else { cross };
+                Rat::new(&p.num * &q.den + cross, &p.den * &q.den).expect("nonzero")
+            };
+            // to_f64 as it was: one truncating division of the scaled value.
+            let approx = |p: &Rat| {
+                let s = (p.num.bits() as i64 - p.den.bits() as i64).clamp(-1100, 1100);
+                let shifted = p.mul_pow2(60 - s);
+                let e = (s - 60) as i32;
+                shifted.num.div_trunc(&shifted.den).to_f64() * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
+            };
+            for p in [&x, &y, &z, &-&x, &x.mul_pow2(-900), &y.mul_pow2(1200)] {
+                prop_assert_eq!(p.to_f64().to_bits(), approx(p).to_bits());
+            }
+            let order = |p: &Rat, q: &Rat| (&p.num * &q.den).cmp(&(&q.num * &p.den));
+            for (p, q) in [(&x, &y), (&y, &x), (&x, &z), (&z, &y), (&x, &x), (&y, &y.mul_pow2(1))] {
+                prop_assert_eq!(p + q, reference(p, q, false));
+                prop_assert_eq!(p - q, reference(p, q, true));
+                prop_assert_eq!(p.cmp(q), order(p, q));
+                prop_assert_eq!(p.cmp(&-q), order(p, &-q));
+            }
         }
     }
 }

@@ -65,8 +65,18 @@ pub(crate) struct Coefficients {
     last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
     /// The last point's jets in balls, likewise.
     last_ball: RefCell<Option<(Rat, [Dual<DwBall>; 5])>>,
-    /// The last interval's enclosures of `(f_k, f_k′, f_k″)`, likewise.
-    last_box: RefCell<Option<(Interval, [Jet2; 5])>>,
+    /// The last interval's enclosures of `f_k` and, once
+    /// [`SignModel::enclose_second`] needed them there, of `(f_k′, f_k″)`,
+    /// likewise.
+    last_box: RefCell<Option<BoxValues>>,
+}
+
+/// Enclosures of the `f_k` over an interval, and of their first and second
+/// derivatives when formed.
+struct BoxValues {
+    at: Interval,
+    values: [Interval; 5],
+    derivatives: Option<[(Interval, Interval); 5]>,
 }
 
 /// `(f, f′, f″)` as nested dual numbers: `d.d` of a polynomial in them is
@@ -238,43 +248,50 @@ impl ClosedForm {
         Some(jets)
     }
 
+    /// Enclosures of `f_k` over `x` (scaled), cached for the last `x`
+    /// (with the derivatives' when formed there).
+    fn box_values(&self, x: Interval) -> [Interval; 5] {
+        if let Some(b) = &*self.f.last_box.borrow() {
+            if b.at == x {
+                return b.values;
+            }
+        }
+        let values = std::array::from_fn(|k| self.f.views[k].enclose(x));
+        *self.f.last_box.borrow_mut() = Some(BoxValues {
+            at: x,
+            values,
+            derivatives: None,
+        });
+        values
+    }
+
     /// Enclosures of `(f_k, f_k′, f_k″)` over `x` (scaled), cached for the
     /// last `x`.
     fn box_jets(&self, x: Interval) -> [Jet2; 5] {
-        if let Some((at, jets)) = &*self.f.last_box.borrow() {
-            if *at == x {
-                return *jets;
-            }
-        }
-        let jets: [Jet2; 5] = std::array::from_fn(|k| {
-            let view = &self.f.views[k];
-            let d1 = view.enclose_derivative(1, x);
+        let values = self.box_values(x);
+        let mut cache = self.f.last_box.borrow_mut();
+        let b = cache.as_mut().expect("box_values fills the cache");
+        let derivatives = *b
+            .derivatives
+            .get_or_insert_with(|| std::array::from_fn(|k| self.f.views[k].enclose_derivatives(x)));
+        std::array::from_fn(|k| {
+            let (d1, d2) = derivatives[k];
             Dual {
                 v: Dual {
-                    v: view.enclose(x),
+                    v: values[k],
                     d: d1,
                 },
-                d: Dual {
-                    v: d1,
-                    d: view.enclose_derivative(2, x),
-                },
+                d: Dual { v: d1, d: d2 },
             }
-        });
-        *self.f.last_box.borrow_mut() = Some((x, jets));
-        jets
+        })
     }
 }
 
 impl SignModel for ClosedForm {
-    /// The closed form over `f64` intervals of `f_k(X)` (the derivatives
-    /// only if [`SignModel::enclose_second`] already needed them there).
+    /// The closed form over `f64` intervals of `f_k(X)` (cached for the
+    /// last `X`, which [`SignModel::enclose_second`] is then asked at).
     fn enclose(&self, x: Interval) -> Interval {
-        if let Some((at, jets)) = &*self.f.last_box.borrow() {
-            if *at == x {
-                return self.of(&jets.each_ref().map(|jet| jet.v.v));
-            }
-        }
-        self.of(&std::array::from_fn(|k| self.f.views[k].enclose(x)))
+        self.of(&self.box_values(x))
     }
 
     fn enclose_second(&self, x: Interval) -> Interval {

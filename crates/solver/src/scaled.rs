@@ -4,6 +4,7 @@
 
 use ccd_arith::{Int, Interval};
 use ccd_poly::ZPoly;
+use std::sync::OnceLock;
 
 /// Bit length kept for the largest coefficient after scaling.
 const TARGET_BITS: i64 = 600;
@@ -16,6 +17,9 @@ pub struct ScaledPoly {
     coeffs: Vec<Interval>,
     approx: Vec<f64>,
     shift: i64,
+    /// `[i·cᵢ, i(i−1)·cᵢ]` enclosed (the coefficients of `p′` and `p″`,
+    /// each one rounding of the product), formed on first need.
+    derived: OnceLock<Vec<[Interval; 2]>>,
 }
 
 impl ScaledPoly {
@@ -36,7 +40,21 @@ impl ScaledPoly {
             coeffs,
             approx,
             shift,
+            derived: OnceLock::new(),
         }
+    }
+
+    /// `[i·cᵢ, i(i−1)·cᵢ]` for every `i` (the falling factorials of
+    /// [`ScaledPoly::enclose_derivative`] for orders 1 and 2).
+    fn derived(&self) -> &[[Interval; 2]] {
+        self.derived.get_or_init(|| {
+            let times = |c: Interval, f: usize| c * Interval::point(f as f64);
+            self.coeffs
+                .iter()
+                .enumerate()
+                .map(|(i, &c)| [times(c, i), times(c, i * i.saturating_sub(1))])
+                .collect()
+        })
     }
 
     /// The power of two the coefficients were scaled by.
@@ -60,11 +78,32 @@ impl ScaledPoly {
     /// derivative.
     pub fn enclose_derivative(&self, order: usize, x: Interval) -> Interval {
         let mut acc = Interval::point(0.0);
+        if (1..=2).contains(&order) {
+            // The same products, formed once ([`ScaledPoly::derived`]).
+            for d in self.derived().iter().skip(order).rev() {
+                acc = acc * x + d[order - 1];
+            }
+            return acc;
+        }
         for (i, c) in self.coeffs.iter().enumerate().skip(order).rev() {
             let factor: usize = (i + 1 - order..=i).product();
             acc = acc * x + *c * Interval::point(factor as f64);
         }
         acc
+    }
+
+    /// `(enclose_derivative(1, x), enclose_derivative(2, x))`, bit for
+    /// bit, from one pass over the coefficients (each Horner sum keeps
+    /// its own order of operations).
+    pub fn enclose_derivatives(&self, x: Interval) -> (Interval, Interval) {
+        let (mut d1, mut d2) = (Interval::point(0.0), Interval::point(0.0));
+        for (i, d) in self.derived().iter().enumerate().skip(1).rev() {
+            d1 = d1 * x + d[0];
+            if i >= 2 {
+                d2 = d2 * x + d[1];
+            }
+        }
+        (d1, d2)
     }
 
     /// `(p(x), p'(x))` approximately, scaled.
@@ -76,5 +115,47 @@ impl ScaledPoly {
             v = v * x + c;
         }
         (v, d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The enclosure of `p⁽ʳ⁾` as it was before the derived coefficients
+    /// were kept: each `cᵢ·i(i−1)…` formed inside the Horner pass.
+    fn reference(p: &ScaledPoly, order: usize, x: Interval) -> Interval {
+        let mut acc = Interval::point(0.0);
+        for (i, c) in p.coeffs.iter().enumerate().skip(order).rev() {
+            let factor: usize = (i + 1 - order..=i).product();
+            acc = acc * x + *c * Interval::point(factor as f64);
+        }
+        acc
+    }
+
+    fn bits(iv: Interval) -> (u64, u64) {
+        (iv.lo.to_bits(), iv.hi.to_bits())
+    }
+
+    proptest! {
+        /// The derivatives from the kept products, alone or both in one
+        /// pass, are the reference's bit for bit (long coefficients, so
+        /// that the scaled ones are inexact, over intervals of either sign).
+        #[test]
+        fn derivatives_are_the_reference(
+            raw in proptest::collection::vec(any::<i64>(), 0..12),
+            wide in 0u64..700, lo in -4.0f64..4.0, w in 0.0f64..1.0,
+        ) {
+            let p = ZPoly::new(raw.iter().map(|&c| Int::from(c).shl(wide) + Int::from(c)).collect());
+            let sp = ScaledPoly::new(&p);
+            let x = Interval::new(lo, lo + w);
+            for order in 1..=3 {
+                prop_assert_eq!(bits(sp.enclose_derivative(order, x)), bits(reference(&sp, order, x)));
+            }
+            let (d1, d2) = sp.enclose_derivatives(x);
+            prop_assert_eq!(bits(d1), bits(reference(&sp, 1, x)));
+            prop_assert_eq!(bits(d2), bits(reference(&sp, 2, x)));
+        }
     }
 }
