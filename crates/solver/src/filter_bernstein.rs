@@ -54,6 +54,21 @@ pub(crate) struct FilterBernstein {
     errs: Vec<f64>,
 }
 
+/// The sign of every number within `e` of `b` (`None` if that interval
+/// holds zero, except for the exact zero `0 ± 0`).
+#[inline]
+fn certified_sign(b: f64, e: f64) -> Option<i32> {
+    if b > e {
+        Some(1)
+    } else if b < -e {
+        Some(-1)
+    } else if b == 0.0 && e == 0.0 {
+        Some(0)
+    } else {
+        None
+    }
+}
+
 impl FilterBernstein {
     /// From interval enclosures of the exact (scaled) coefficients: their
     /// midpoints and distances to the farther end.
@@ -126,22 +141,16 @@ impl FilterBernstein {
 
     /// The certified sign of coefficient `i` (`None` if undecided).
     pub(crate) fn sign(&self, i: usize) -> Option<i32> {
-        let (b, e) = (self.coeffs[i], self.errs[i]);
-        if b > e {
-            Some(1)
-        } else if b < -e {
-            Some(-1)
-        } else if b == 0.0 && e == 0.0 {
-            Some(0)
-        } else {
-            None
-        }
+        certified_sign(self.coeffs[i], self.errs[i])
     }
 
     /// The certified sign of every coefficient in turn (`None` where
     /// undecided).
     pub(crate) fn signs(&self) -> impl Iterator<Item = Option<i32>> + '_ {
-        (0..self.coeffs.len()).map(|i| self.sign(i))
+        self.coeffs
+            .iter()
+            .zip(&self.errs)
+            .map(|(&b, &e)| certified_sign(b, e))
     }
 
     /// Whether every coefficient's sign is certified.
