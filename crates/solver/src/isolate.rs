@@ -370,8 +370,9 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// Halves `node` and stacks the halves (left on top), with the split
     /// point itself when it is a root.
     fn split_and_push(&mut self, node: Node) {
-        let mid = Rat::midpoint(&node.lo, &node.hi);
         let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
+        // The split point, as the halves have it (computed once).
+        let mid = left.hi.clone();
         for child in [&left, &right] {
             if let Coeffs::Exact(b) = &child.coeffs {
                 self.charge(b, 1);
