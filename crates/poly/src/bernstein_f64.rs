@@ -204,8 +204,23 @@ pub fn binomial_row(n: usize) -> Vec<f64> {
     row
 }
 
-/// `a * b` as a convolution of coefficient sequences.
+/// `a * b` as a convolution of coefficient sequences. A constant factor
+/// (the closed forms' `12`, `−3`, `27`, …) takes one pass: each output is
+/// then the single term the general sum adds to its `0` (`0 + x·y`, so
+/// that a `−0` product still gives `+0`, and nothing for a zero `x`), the
+/// same bits without the zeroed buffer and the loop nest.
 fn convolve(a: &[f64], b: &[f64]) -> Coeffs {
+    let term = |x: f64, y: f64| if x == 0.0 { 0.0 } else { 0.0 + x * y };
+    match (a, b) {
+        (&[x], _) => b.iter().map(|&y| term(x, y)).collect(),
+        (_, &[y]) => a.iter().map(|&x| term(x, y)).collect(),
+        _ => convolve_sums(a, b),
+    }
+}
+
+/// [`convolve`] by the running sums: output `i + j` adds `a_i·b_j` for
+/// `i` ascending (zero `a_i` skipped).
+fn convolve_sums(a: &[f64], b: &[f64]) -> Coeffs {
     let mut out = Coeffs::zeros(a.len() + b.len() - 1);
     for (i, &x) in a.iter().enumerate() {
         if x == 0.0 {
@@ -489,6 +504,23 @@ mod tests {
         assert_eq!(*convolve(&[3.0], &[-0.5]), [-1.5]);
         assert!(convolve(&[0.0], &[-2.0])[0].is_sign_positive());
         assert!(convolve(&[-2.0], &[0.0])[0].is_sign_positive());
+    }
+
+    proptest::proptest! {
+        /// A constant factor on either side gives the running sums' bits:
+        /// zeros of both signs, infinities, subnormals and ordinary values.
+        #[test]
+        fn constant_factors_match_the_running_sums(
+            k in proptest::sample::select(vec![0.0, -0.0, 12.0, -3.0, 27.0, f64::INFINITY, 5e-324, -1.5e300]),
+            raw in proptest::collection::vec(proptest::sample::select(vec![0.0, -0.0, 1.0, -2.5, f64::NEG_INFINITY, 5e-324, 3.7e-310, 1e308, -7.25]), 1..12),
+        ) {
+            let bits = |c: &Coeffs| c.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            for (a, b) in [(&[k][..], &raw[..]), (&raw[..], &[k][..])] {
+                let (fast, sums) = (convolve(a, b), convolve_sums(a, b));
+                proptest::prop_assert_eq!(bits(&fast), bits(&sums));
+                proptest::prop_assert_eq!(matches!(fast, Coeffs::One(_)), matches!(sums, Coeffs::One(_)));
+            }
+        }
     }
 
     #[test]

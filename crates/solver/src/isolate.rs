@@ -83,19 +83,35 @@ enum Item<M: SignModel + Clone> {
     Node(Node),
 }
 
-/// Sign variations of a sign sequence, zeros skipped.
-fn variations(signs: &[i32]) -> usize {
-    let mut last = 0;
-    let mut v = 0;
-    for &s in signs {
-        if s != 0 {
-            if last != 0 && s != last {
-                v += 1;
+/// What [`RootIter`] reads off a node's coefficient signs: the sign
+/// variations (zeros skipped) and the signs of the first and last
+/// coefficient (the signs of `p` at the node's ends).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct SignSummary {
+    var: usize,
+    first: i32,
+    last: i32,
+}
+
+impl SignSummary {
+    /// One pass over the coefficients' signs; `None` if one of them is
+    /// undecided (`None`) or there is none.
+    fn of(signs: impl IntoIterator<Item = Option<i32>>) -> Option<SignSummary> {
+        let mut signs = signs.into_iter();
+        let first = signs.next()??;
+        let (mut var, mut last, mut nonzero) = (0, first, first);
+        for s in signs {
+            let s = s?;
+            if s != 0 {
+                if nonzero != 0 && s != nonzero {
+                    var += 1;
+                }
+                nonzero = s;
             }
             last = s;
         }
+        Some(SignSummary { var, first, last })
     }
-    v
 }
 
 impl Node {
@@ -116,7 +132,7 @@ impl Node {
         let (lo, hi) = (b.lo().clone(), b.hi().clone());
         let f = float
             .then(|| FilterBernstein::from_exact(b.coeffs(), b.scale().signum()))
-            .filter(|f| f.signs().is_some());
+            .filter(FilterBernstein::decided);
         let coeffs = match f {
             Some(f) => Coeffs::Filter(f),
             None => Coeffs::Exact(b),
@@ -130,12 +146,14 @@ impl Node {
         }
     }
 
-    fn signs(&self) -> Option<Vec<i32>> {
+    /// The summary of the coefficients' signs (`None` if the filter
+    /// leaves one open).
+    fn signs(&self) -> Option<SignSummary> {
         match &self.coeffs {
-            Coeffs::Filter(f) => f.signs(),
+            Coeffs::Filter(f) => SignSummary::of(f.signs()),
             Coeffs::Exact(b) => {
                 let s = b.scale().signum();
-                Some(b.coeffs().iter().map(|c| c.signum() * s).collect())
+                SignSummary::of(b.coeffs().iter().map(|c| Some(c.signum() * s)))
             }
         }
     }
@@ -294,7 +312,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
         let f = FilterBernstein::from_intervals(coeffs);
-        let undecided = coeffs.is_empty() || lo >= hi || f.signs().is_none();
+        let undecided = coeffs.is_empty() || lo >= hi || !f.decided();
         let stack = if undecided {
             vec![]
         } else {
@@ -352,8 +370,9 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// Halves `node` and stacks the halves (left on top), with the split
     /// point itself when it is a root.
     fn split_and_push(&mut self, node: Node) {
-        let mid = Rat::midpoint(&node.lo, &node.hi);
         let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
+        // The split point, as the halves have it (computed once).
+        let mid = left.hi.clone();
         for child in [&left, &right] {
             if let Coeffs::Exact(b) = &child.coeffs {
                 self.charge(b, 1);
@@ -503,11 +522,10 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     continue;
                 }
             };
-            let var = variations(&signs);
+            let SignSummary { var, first, last } = signs;
             if var == 0 {
                 continue;
             }
-            let (first, last) = (signs[0], signs[signs.len() - 1]);
             if var == 1 && first != 0 && last != 0 {
                 return Some(RealRoot::isolated(
                     self.base.clone(),
@@ -540,12 +558,21 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 
 #[cfg(test)]
 mod tests {
-    use super::variations;
+    use super::SignSummary;
+
+    fn summary(signs: &[i32]) -> Option<SignSummary> {
+        SignSummary::of(signs.iter().map(|&s| Some(s)))
+    }
 
     #[test]
     fn variations_skip_zeros() {
-        assert_eq!(variations(&[1, 0, -1, 0, 0, 1]), 2);
-        assert_eq!(variations(&[0, 0]), 0);
-        assert_eq!(variations(&[-1, -1, 1]), 1);
+        let var = |signs: &[i32]| summary(signs).map(|s| s.var);
+        assert_eq!(var(&[1, 0, -1, 0, 0, 1]), Some(2));
+        assert_eq!(var(&[0, 0]), Some(0));
+        assert_eq!(var(&[-1, -1, 1]), Some(1));
+        let ends = summary(&[0, 1, -1, 0]).map(|s| (s.first, s.last));
+        assert_eq!(ends, Some((0, 0)));
+        assert_eq!(summary(&[]), None);
+        assert_eq!(SignSummary::of([Some(1), None, Some(1)]), None);
     }
 }
