@@ -83,13 +83,17 @@ pub enum Item {
 
 /// The time `t0 + u·(t1 − t0)` of the parameter `u ∈ [0, 1]` on the span
 /// `[t0, t1]` (the rational paths' [`Oracle::time`]); the ends `u = 0, 1`,
-/// which every timeline has, without arithmetic.
+/// which every timeline has, and every `u` on the unit span `[0, 1]`
+/// (`t = u`), without arithmetic.
 pub fn time_on(span: &[Rat; 2], u: &Rat) -> Rat {
     let [t0, t1] = span;
     if u.is_zero() {
         t0.clone()
     } else if u.is_integer() && u.numer().is_one() {
         t1.clone()
+    } else if t0.is_zero() && t1.is_integer() && t1.numer().is_one() {
+        // The unit span: t = u.
+        u.clone()
     } else {
         t0 + &(u * &(t1 - t0))
     }
