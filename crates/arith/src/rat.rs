@@ -227,7 +227,11 @@ impl Add<&Rat> for &Rat {
 impl Sub<&Rat> for &Rat {
     type Output = Rat;
     fn sub(self, o: &Rat) -> Rat {
-        self + &(-o)
+        // As `self + (−o)`, without forming `−o` (a copy of both parts).
+        if self.den == o.den {
+            return Rat::reduce(&self.num - &o.num, self.den.clone());
+        }
+        Rat::reduce(&self.num * &o.den - &o.num * &self.den, &self.den * &o.den)
     }
 }
 impl Mul<&Rat> for &Rat {
@@ -285,6 +289,8 @@ mod tests {
         fn field_identities(a in -1000i64..1000, b in 1i64..1000, c in -1000i64..1000, d in 1i64..1000) {
             let (x, y) = (Rat::from_frac(a, b), Rat::from_frac(c, d));
             prop_assert_eq!(&(&x + &y) - &y, x.clone());
+            prop_assert_eq!(&x - &y, &x + &(-&y));
+            prop_assert_eq!(&x - &x, Rat::zero());
             if !y.is_zero() { prop_assert_eq!(&(&x * &y) / &y, x.clone()); }
             prop_assert_eq!(x < y, (a as i128) * (d as i128) < (c as i128) * (b as i128));
             prop_assert!((x.to_f64() - a as f64 / b as f64).abs() < 1e-12);
