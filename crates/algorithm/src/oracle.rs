@@ -173,3 +173,32 @@ pub trait Oracle {
     /// The arithmetic's own statistics (degrees, what was formed).
     fn stats(&self, stats: &mut Stats);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::time_on;
+    use ccd_arith::Rat;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Every shortcut of `time_on` is `t0 + u·(t1 − t0)`.
+        #[test]
+        fn time_on_is_the_affine_map(
+            u in (0i64..=64, 1i64..=64),
+            t0 in (-5i64..5, 1i64..4),
+            len in (1i64..5, 1i64..4),
+            unit in any::<bool>(),
+        ) {
+            let u = Rat::from_frac(u.0.min(u.1), u.1);
+            let span = if unit {
+                [Rat::zero(), Rat::one()]
+            } else {
+                let t0 = Rat::from_frac(t0.0, t0.1);
+                let t1 = &t0 + &Rat::from_frac(len.0, len.1);
+                [t0, t1]
+            };
+            let want = &span[0] + &(&u * &(&span[1] - &span[0]));
+            prop_assert_eq!(time_on(&span, &u), want);
+        }
+    }
+}
