@@ -83,13 +83,17 @@ pub enum Item {
 
 /// The time `t0 + u·(t1 − t0)` of the parameter `u ∈ [0, 1]` on the span
 /// `[t0, t1]` (the rational paths' [`Oracle::time`]); the ends `u = 0, 1`,
-/// which every timeline has, without arithmetic.
+/// which every timeline has, and every `u` on the unit span `[0, 1]`
+/// (`t = u`), without arithmetic.
 pub fn time_on(span: &[Rat; 2], u: &Rat) -> Rat {
     let [t0, t1] = span;
     if u.is_zero() {
         t0.clone()
     } else if u.is_integer() && u.numer().is_one() {
         t1.clone()
+    } else if t0.is_zero() && t1.is_integer() && t1.numer().is_one() {
+        // The unit span: t = u.
+        u.clone()
     } else {
         t0 + &(u * &(t1 - t0))
     }
@@ -168,4 +172,33 @@ pub trait Oracle {
     }
     /// The arithmetic's own statistics (degrees, what was formed).
     fn stats(&self, stats: &mut Stats);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::time_on;
+    use ccd_arith::Rat;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Every shortcut of `time_on` is `t0 + u·(t1 − t0)`.
+        #[test]
+        fn time_on_is_the_affine_map(
+            u in (0i64..=64, 1i64..=64),
+            t0 in (-5i64..5, 1i64..4),
+            len in (1i64..5, 1i64..4),
+            unit in any::<bool>(),
+        ) {
+            let u = Rat::from_frac(u.0.min(u.1), u.1);
+            let span = if unit {
+                [Rat::zero(), Rat::one()]
+            } else {
+                let t0 = Rat::from_frac(t0.0, t0.1);
+                let t1 = &t0 + &Rat::from_frac(len.0, len.1);
+                [t0, t1]
+            };
+            let want = &span[0] + &(&u * &(&span[1] - &span[0]));
+            prop_assert_eq!(time_on(&span, &u), want);
+        }
+    }
 }

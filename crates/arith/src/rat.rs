@@ -159,8 +159,22 @@ impl Rat {
         } else {
             (frac | (1u64 << 52), exp - 1075)
         };
-        let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
-        Some(if x < 0.0 { -v } else { v })
+        // In lowest terms directly: m odd after stripping its trailing
+        // zeros, so `m·2^e` is `m·2^e / 1` (e ≥ 0) or `m / 2^−e`.
+        let tz = m.trailing_zeros();
+        let (m, e) = (m >> tz, e + tz as i64);
+        let num = Int::from_i64(if x < 0.0 { -(m as i64) } else { m as i64 });
+        Some(if e >= 0 {
+            Rat {
+                num: num.shl(e as u64),
+                den: Int::one(),
+            }
+        } else {
+            Rat {
+                num,
+                den: Int::one().shl(e.unsigned_abs()),
+            }
+        })
     }
     /// A nearby `f64` (not certified).
     pub fn to_f64(&self) -> f64 {
@@ -314,6 +328,8 @@ mod tests {
         fn field_identities(a in -1000i64..1000, b in 1i64..1000, c in -1000i64..1000, d in 1i64..1000) {
             let (x, y) = (Rat::from_frac(a, b), Rat::from_frac(c, d));
             prop_assert_eq!(&(&x + &y) - &y, x.clone());
+            prop_assert_eq!(&x - &y, &x + &(-&y));
+            prop_assert_eq!(&x - &x, Rat::zero());
             if !y.is_zero() { prop_assert_eq!(&(&x * &y) / &y, x.clone()); }
             prop_assert_eq!(x < y, (a as i128) * (d as i128) < (c as i128) * (b as i128));
             prop_assert!((x.to_f64() - a as f64 / b as f64).abs() < 1e-12);
@@ -356,5 +372,40 @@ mod tests {
                 prop_assert_eq!(p.cmp(&-q), order(p, &-q));
             }
         }
+        /// The direct construction in lowest terms is the reduced `m·2^e`
+        /// (every finite float: normal, subnormal, zero, both signs).
+        #[test]
+        fn from_f64_exact_is_the_reduced_value(bits in any::<u64>()) {
+            let x = f64::from_bits(bits);
+            prop_assume!(x.is_finite());
+            let exp = ((bits >> 52) & 0x7ff) as i64;
+            let frac = bits & ((1u64 << 52) - 1);
+            let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
+            let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
+            let reference = if x < 0.0 { -v } else { v };
+            let got = Rat::from_f64_exact(x).unwrap();
+            prop_assert_eq!(got.numer(), reference.numer());
+            prop_assert_eq!(got.denom(), reference.denom());
+        }
+    }
+
+    #[test]
+    fn from_f64_exact_at_the_ends() {
+        for x in [
+            0.0,
+            -0.0,
+            1.0,
+            -0.75,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            3.0 * 2f64.powi(60),
+        ] {
+            let r = Rat::from_f64_exact(x).unwrap();
+            assert_eq!(r.to_f64(), x, "{x}");
+            assert!(r.denom().is_one() || r.numer().trailing_zeros() == Some(0));
+        }
+        assert!(Rat::from_f64_exact(f64::NAN).is_none());
     }
 }

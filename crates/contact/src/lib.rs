@@ -512,10 +512,11 @@ pub fn at_time<N: Scalar + Trig>(
 }
 
 fn to_box<S: Scalar>(v: &[S; 3]) -> Option<Box3> {
-    let ends: Vec<(Rat, Rat)> = v.iter().map(Scalar::bounds).collect::<Option<_>>()?;
+    let [x, y, z] = v.each_ref().map(Scalar::bounds);
+    let ((x0, x1), (y0, y1), (z0, z1)) = (x?, y?, z?);
     Some(Box3 {
-        lo: std::array::from_fn(|i| ends[i].0.clone()),
-        hi: std::array::from_fn(|i| ends[i].1.clone()),
+        lo: [x0, y0, z0],
+        hi: [x1, y1, z1],
     })
 }
 
@@ -588,13 +589,28 @@ pub const PRECISIONS: [u32; 4] = [53, 128, 256, 512];
 /// the result (the caller knows whether the instant and the case are
 /// proven).
 pub fn enclose(
+    bodies: (&Body, &Body, &[Rat; 2]),
+    time: (&Rat, &Rat),
+    case: Case,
+    goal: &Goal,
+    certified: bool,
+    precisions: &[u32],
+) -> Result<Geometry, ContactError> {
+    enclose_to_goal(bodies, time, case, goal, certified, precisions).map(|(g, _)| g)
+}
+
+/// [`enclose`], and whether its result meets `goal` (`Goal::met`, decided
+/// once here: the first result that meets it is returned, so `false` means
+/// the narrowest one that does not), for a caller that goes on to a
+/// narrower instant when it does not.
+pub fn enclose_to_goal(
     (a, b, span): (&Body, &Body, &[Rat; 2]),
     (lo, hi): (&Rat, &Rat),
     case: Case,
     goal: &Goal,
     certified: bool,
     precisions: &[u32],
-) -> Result<Geometry, ContactError> {
+) -> Result<(Geometry, bool), ContactError> {
     let mut best: Option<Geometry> = None;
     let mut error = ContactError::Kernel;
     for &prec in precisions {
@@ -608,7 +624,7 @@ pub fn enclose(
         match result {
             Ok(Some(g)) => {
                 if goal.met(&g) {
-                    return Ok(g);
+                    return Ok((g, true));
                 }
                 let narrower = |old: &Geometry| match (old, &g) {
                     (Geometry::Point { point: p, .. }, Geometry::Point { point: q, .. }) => {
@@ -624,7 +640,7 @@ pub fn enclose(
             Err(e) => error = e,
         }
     }
-    best.ok_or(error)
+    best.map(|g| (g, false)).ok_or(error)
 }
 
 /// A float estimate (the paper's setting, not certified) at the time `t`:

@@ -145,3 +145,45 @@ fn interval_tangency_encloses_the_exact_point_tightly() {
         assert!(n.lo <= want && want <= n.hi && n.hi - n.lo < 1e-14, "{n:?}");
     }
 }
+
+#[test]
+fn enclose_to_goal_says_whether_the_goal_is_met() {
+    // Two static axis-aligned bodies touching at (2, 0, 0) (the pair of
+    // `interval_tangency_encloses_the_exact_point_tightly`), at any time.
+    let body = |radii: [Rat; 3], x: i64| Body {
+        radii,
+        motion: ccd_motion::Motion::Static {
+            center: [x, 0, 0].map(Rat::from),
+            orientation: ccd_motion::Motion::identity(),
+        },
+    };
+    let a = body([2, 1, 1].map(Rat::from), 0);
+    let b = body([Rat::from(1), r(3, 2), r(1, 2)], 3);
+    let span = [Rat::zero(), Rat::one()];
+    let t = r(1, 3);
+    for digits in [15, 40] {
+        let goal = Goal::new(&a, &b, digits);
+        let precisions = [53];
+        let (g, met) = enclose_to_goal(
+            (&a, &b, &span),
+            (&t, &t),
+            Case::Simple,
+            &goal,
+            true,
+            &precisions,
+        )
+        .unwrap();
+        // f64 meets the default goal, not one of 37 digits.
+        assert_eq!(met, digits == 15);
+        assert_eq!(met, goal.met(&g));
+        let plain = enclose(
+            (&a, &b, &span),
+            (&t, &t),
+            Case::Simple,
+            &goal,
+            true,
+            &precisions,
+        );
+        assert_eq!(plain, Ok(g));
+    }
+}

@@ -36,41 +36,55 @@ fn konst_vec<N: Trig, const D: usize>(v: &[Rat; D], prec: u32) -> [N; D] {
 
 /// A (rational) Bézier curve at `u` by de Casteljau's algorithm: the
 /// weighted numerators `Σ Bᵢ(u)·wᵢ·Pᵢ` and the denominator `Σ Bᵢ(u)·wᵢ`.
+///
+/// The control rows `(wᵢ·Pᵢ, wᵢ)` are combined in place, row `i` of level
+/// `r + 1` being `(1 − u)·rowᵢ + u·rowᵢ₊₁` of level `r` (ascending `i`
+/// reads `rowᵢ₊₁` before it is overwritten); a point without a weight
+/// (`wᵢ = 1`) is taken as it is, with no rational product.
 fn bezier<N: Trig, const D: usize>(
     points: &[[Rat; D]],
     weights: Option<&[Rat]>,
     u: &N,
     prec: u32,
 ) -> ([N; D], N) {
+    bezier_of(points.iter().map(|p| p.each_ref()), weights, u, prec)
+}
+
+/// [`bezier`] of control points given by reference (`points` yields each
+/// point's `D` coordinates), so that a caller whose points are stored in
+/// another shape (an affine `[L | d]`) need not copy them.
+fn bezier_of<'a, N: Trig, const D: usize>(
+    points: impl Iterator<Item = [&'a Rat; D]>,
+    weights: Option<&[Rat]>,
+    u: &N,
+    prec: u32,
+) -> ([N; D], N) {
     let one_minus = N::one().minus(u);
-    let mut rows: Vec<Vec<N>> = points
-        .iter()
+    let one = Rat::one();
+    let mut rows: Vec<([N; D], N)> = points
         .enumerate()
-        .map(|(i, p)| {
-            let w = weights
-                .and_then(|ws| ws.get(i))
-                .cloned()
-                .unwrap_or_else(Rat::one);
-            let mut row: Vec<N> = p.iter().map(|x| konst(&(x * &w), prec)).collect();
-            row.push(konst(&w, prec));
-            row
+        .map(|(i, p)| match weights.and_then(|ws| ws.get(i)) {
+            Some(w) => (
+                std::array::from_fn(|k| konst(&(p[k] * w), prec)),
+                konst(w, prec),
+            ),
+            None => (p.map(|x| konst(x, prec)), konst(&one, prec)),
         })
         .collect();
-    while rows.len() > 1 {
-        rows = rows
-            .windows(2)
-            .map(|w| {
-                w[0].iter()
-                    .zip(&w[1])
-                    .map(|(a, b)| a.times(&one_minus).plus(&b.times(u)))
-                    .collect()
-            })
-            .collect();
+    let lerp = |a: &N, b: &N| a.times(&one_minus).plus(&b.times(u));
+    for level in 1..rows.len() {
+        for i in 0..rows.len() - level {
+            let (head, tail) = rows.split_at_mut(i + 1);
+            let (row, next) = (&mut head[i], &tail[0]);
+            for (x, y) in row.0.iter_mut().zip(&next.0) {
+                *x = lerp(x, y);
+            }
+            row.1 = lerp(&row.1, &next.1);
+        }
     }
-    let last = rows.pop().unwrap_or_else(|| vec![N::zero(); D + 1]);
-    let coords: [N; D] = std::array::from_fn(|k| last.get(k).cloned().unwrap_or_else(N::zero));
-    let w = last.get(D).cloned().unwrap_or_else(N::one);
-    (coords, w)
+    rows.into_iter()
+        .next()
+        .unwrap_or_else(|| (std::array::from_fn(|_| N::zero()), N::one()))
 }
 
 /// The helical orientation quaternion at `t` (not unit: `|q|² = |axis|²·|q0|²`).
@@ -156,12 +170,11 @@ fn inverse_placement<N: Trig>(motion: &Motion, span: &[Rat; 2], t: &N, prec: u32
             rigid(&q, &c, &w)
         }
         Motion::Affine { matrix } => {
-            let flat: Vec<[Rat; 12]> = matrix
+            let flat = matrix
                 .points
                 .iter()
-                .map(|m| std::array::from_fn(|k| m[k / 4][k % 4].clone()))
-                .collect();
-            let (v, w) = bezier(&flat, matrix.weights.as_deref(), &u(), prec);
+                .map(|m| std::array::from_fn::<_, 12, _>(|k| &m[k / 4][k % 4]));
+            let (v, w) = bezier_of(flat, matrix.weights.as_deref(), &u(), prec);
             let l: Mat3<N> = std::array::from_fn(|r| std::array::from_fn(|k| v[4 * r + k].clone()));
             let d: [N; 3] = std::array::from_fn(|r| v[4 * r + 3].clone());
             affine_inverse(&l, &d, &w)
@@ -389,5 +402,72 @@ mod tests {
         let den = 9.0 / 16.0 + 18.0 / 16.0 + 2.0 / 16.0;
         let x = (18.0 * 4.0 / 16.0 + 2.0 * 2.0 / 16.0) / den;
         assert!((c[0].mid() / w.mid() - x).abs() < 1e-14);
+    }
+
+    /// The level-by-level de Casteljau evaluation [`bezier`] replaced (a
+    /// new row vector per level, every point multiplied by its weight,
+    /// `1` when there is none): the in-place one must give the same
+    /// enclosures bit for bit, the printed contact boxes depending on them.
+    fn bezier_by_levels<N: Trig, const D: usize>(
+        points: &[[Rat; D]],
+        weights: Option<&[Rat]>,
+        u: &N,
+        prec: u32,
+    ) -> Vec<N> {
+        let one_minus = N::one().minus(u);
+        let mut rows: Vec<Vec<N>> = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let w = weights
+                    .and_then(|ws| ws.get(i))
+                    .cloned()
+                    .unwrap_or_else(Rat::one);
+                let mut row: Vec<N> = p.iter().map(|x| konst(&(x * &w), prec)).collect();
+                row.push(konst(&w, prec));
+                row
+            })
+            .collect();
+        while rows.len() > 1 {
+            rows = rows
+                .windows(2)
+                .map(|w| {
+                    w[0].iter()
+                        .zip(&w[1])
+                        .map(|(a, b)| a.times(&one_minus).plus(&b.times(u)))
+                        .collect()
+                })
+                .collect();
+        }
+        rows.pop().unwrap_or_else(|| vec![N::zero(); D + 1])
+    }
+
+    fn flat<N: Clone, const D: usize>((c, w): ([N; D], N)) -> Vec<N> {
+        c.iter().cloned().chain([w]).collect()
+    }
+
+    use proptest::prelude::*;
+
+    fn small_rat() -> impl Strategy<Value = Rat> {
+        (-2000i64..2000, 1i64..700).prop_map(|(n, d)| Rat::new(n.into(), d.into()).unwrap())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+        #[test]
+        fn in_place_bezier_is_the_level_by_level_one(
+            points in proptest::collection::vec([small_rat(), small_rat(), small_rat()], 1..5),
+            weights in proptest::collection::vec(1i64..9, 0..5),
+            weighted in any::<bool>(),
+            u in (0i64..=1000, 0i64..40),
+        ) {
+            let ws: Vec<Rat> = weights.into_iter().map(r).collect();
+            let ws = weighted.then_some(ws.as_slice());
+            let (lo, hi) = (Rat::new(u.0.into(), 1000.into()).unwrap(), Rat::new((u.0 + u.1).into(), 1000.into()).unwrap());
+            let t = Interval::from_rat(&lo).hull(&Interval::from_rat(&hi));
+            prop_assert_eq!(flat(bezier(&points, ws, &t, 53)), bezier_by_levels(&points, ws, &t, 53));
+            let big = crate::BigInterval::from_rat(&lo, 128).hull(&crate::BigInterval::from_rat(&hi, 128));
+            prop_assert_eq!(flat(bezier(&points, ws, &big, 128)), bezier_by_levels(&points, ws, &big, 128));
+        }
     }
 }

@@ -5,7 +5,7 @@
 use crate::signs::{model, Coefficients};
 
 use ccd_arith::{Int, Rat};
-use ccd_contact::{enclose, from_quadrics, Case, ContactError, Goal};
+use ccd_contact::{enclose, enclose_to_goal, from_quadrics, Case, ContactError, Goal};
 use ccd_motion::PlacedQuadric;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, SignModel};
@@ -143,9 +143,9 @@ impl<'a> Bodies<'a> {
             let (lo, hi) = (self.time(r.lo()), self.time(r.hi()));
             let (a, b, span) = (&self.scene.a, &self.scene.b, &self.scene.span);
             let goal = &self.goal;
-            match enclose((a, b, span), (&lo, &hi), case, goal, true, precisions) {
-                Ok(g) if goal.met(&g) => return g,
-                other => last = Some(other),
+            match enclose_to_goal((a, b, span), (&lo, &hi), case, goal, true, precisions) {
+                Ok((g, true)) => return g,
+                other => last = Some(other.map(|(g, _)| g)),
             }
         }
         match last {
