@@ -159,8 +159,19 @@ impl Rat {
         } else {
             (frac | (1u64 << 52), exp - 1075)
         };
-        let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
-        Some(if x < 0.0 { -v } else { v })
+        // m·2^e in lowest terms straight from the bits: the power of two
+        // a negative e leaves in the denominator loses m's trailing zeros.
+        // m < 2^53: an i64.
+        let signed = |m: u64| Int::from_i64(if x < 0.0 { -(m as i64) } else { m as i64 });
+        Some(if e >= 0 {
+            Rat::from_int(signed(m).shl(e as u64))
+        } else {
+            let z = u64::from(m.trailing_zeros()).min(e.unsigned_abs());
+            Rat {
+                num: signed(m >> z),
+                den: Int::one().shl(e.unsigned_abs() - z),
+            }
+        })
     }
     /// A nearby `f64` (not certified).
     pub fn to_f64(&self) -> f64 {
@@ -307,6 +318,39 @@ mod tests {
 
     fn r(s: &str) -> Rat {
         s.parse().unwrap()
+    }
+
+    /// [`Rat::from_f64_exact`] as it was: the mantissa times a power of
+    /// two, reduced by a gcd.
+    fn from_f64_by_reduction(x: f64) -> Option<Rat> {
+        if !x.is_finite() {
+            return None;
+        }
+        if x == 0.0 {
+            return Some(Rat::zero());
+        }
+        let bits = x.to_bits();
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = bits & ((1u64 << 52) - 1);
+        let (m, e) = if exp == 0 {
+            (frac, -1074)
+        } else {
+            (frac | (1u64 << 52), exp - 1075)
+        };
+        let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
+        Some(if x < 0.0 { -v } else { v })
+    }
+
+    proptest! {
+        /// Floats from their bits are the reduced products: every class
+        /// (subnormal, integral, huge, infinite, NaN) and short mantissas
+        /// (many trailing zeros).
+        #[test]
+        fn from_f64_exact_is_the_reduction(x in any::<f64>(), m in -4096i64..4096, e in -1100i32..1000) {
+            prop_assert_eq!(Rat::from_f64_exact(x), from_f64_by_reduction(x));
+            let y = m as f64 * 2f64.powi(e);
+            prop_assert_eq!(Rat::from_f64_exact(y), from_f64_by_reduction(y));
+        }
     }
 
     proptest! {
