@@ -3,7 +3,8 @@
 //! (`ccd-quadric`, `ccd-subres`) yields a quantity and its derivative in t.
 //! Over intervals, `d` encloses the derivative over the whole box the value
 //! was evaluated on (the chain rule applied to enclosures); nested,
-//! `Dual<Dual<T>>` carries second derivatives in `d.d`.
+//! `Dual<Dual<T>>` carries second derivatives in `d.d` ([`crate::Jet2`] is
+//! the same with 6 instead of 9 products).
 
 use crate::RingOps;
 

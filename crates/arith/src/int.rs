@@ -258,6 +258,29 @@ impl Int {
             down += 64;
         }
     }
+    /// The position of the highest bit in which `|self|` and `|o|` differ
+    /// (`None` when they are equal): the largest `s` with
+    /// `⌊|self|·2^(−s)⌋ ≠ ⌊|o|·2^(−s)⌋`. Read 64 bits at a time from the
+    /// longer number's leading bit down, without shifted copies.
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// assert_eq!(Int::from(0b1011).highest_differing_bit(&Int::from(0b1001)), Some(1));
+    /// assert_eq!(Int::from(8).highest_differing_bit(&Int::from(-8)), None);
+    /// ```
+    pub fn highest_differing_bit(&self, o: &Int) -> Option<u64> {
+        let top = self.bits().max(o.bits()) as i64;
+        let (x, y) = (self.abs_digits(), o.abs_digits());
+        let mut lo = top - 64;
+        while lo > -64 {
+            let d = window(&x, lo) ^ window(&y, lo);
+            if d != 0 {
+                return Some((lo + 63 - d.leading_zeros() as i64) as u64);
+            }
+            lo -= 64;
+        }
+        None
+    }
     /// `⌊self·2^(−s)⌋` (`up == false`) or `⌈self·2^(−s)⌉`, truncating the
     /// magnitude digit by digit and adding one unit away from zero when a
     /// dropped bit is set and the direction asks for it (down for a

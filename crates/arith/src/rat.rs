@@ -323,6 +323,39 @@ mod tests {
         s.parse().unwrap()
     }
 
+    /// [`Rat::from_f64_exact`] as it was: the mantissa times a power of
+    /// two, reduced by a gcd.
+    fn from_f64_by_reduction(x: f64) -> Option<Rat> {
+        if !x.is_finite() {
+            return None;
+        }
+        if x == 0.0 {
+            return Some(Rat::zero());
+        }
+        let bits = x.to_bits();
+        let exp = ((bits >> 52) & 0x7ff) as i64;
+        let frac = bits & ((1u64 << 52) - 1);
+        let (m, e) = if exp == 0 {
+            (frac, -1074)
+        } else {
+            (frac | (1u64 << 52), exp - 1075)
+        };
+        let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
+        Some(if x < 0.0 { -v } else { v })
+    }
+
+    proptest! {
+        /// Floats from their bits are the reduced products: every class
+        /// (subnormal, integral, huge, infinite, NaN) and short mantissas
+        /// (many trailing zeros).
+        #[test]
+        fn from_f64_exact_is_the_reduction(x in any::<f64>(), m in -4096i64..4096, e in -1100i32..1000) {
+            prop_assert_eq!(Rat::from_f64_exact(x), from_f64_by_reduction(x));
+            let y = m as f64 * 2f64.powi(e);
+            prop_assert_eq!(Rat::from_f64_exact(y), from_f64_by_reduction(y));
+        }
+    }
+
     proptest! {
         #[test]
         fn field_identities(a in -1000i64..1000, b in 1i64..1000, c in -1000i64..1000, d in 1i64..1000) {

@@ -12,7 +12,7 @@
 //! same generic [`closed_forms`] over other rings:
 //!
 //! * `q(X)`: over `f64` intervals of `f_k(X)`;
-//! * `q″(X)`: over nested dual numbers of `(f_k, f_k′, f_k″)(X)`;
+//! * `q″(X)`: over second-order jets [`Jet2`] of `(f_k, f_k′, f_k″)(X)`;
 //! * `q(m), q′(m)` exactly: over dual numbers of the exact homogeneous
 //!   values `2^(jn)·(f_k(m), f_k′(m))` at `m = a/2^j` (so the result is
 //!   `2^(jnw)·(q(m), q′(m))`), for degree-`n` polynomials `f_k` with
@@ -26,7 +26,7 @@
 //! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
 //! products of the closed forms).
 
-use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
+use ccd_arith::{Dual, DwBall, Int, Interval, Jet2, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
@@ -78,10 +78,6 @@ struct BoxValues {
     values: [Interval; 5],
     derivatives: Option<[(Interval, Interval); 5]>,
 }
-
-/// `(f, f′, f″)` as nested dual numbers: `d.d` of a polynomial in them is
-/// the second derivative.
-type Jet2 = Dual<Dual<Interval>>;
 
 impl Coefficients {
     pub(crate) fn new(f: CharPoly) -> Coefficients {
@@ -266,8 +262,9 @@ impl ClosedForm {
     }
 
     /// Enclosures of `(f_k, f_k′, f_k″)` over `x` (scaled), cached for the
-    /// last `x`.
-    fn box_jets(&self, x: Interval) -> [Jet2; 5] {
+    /// last `x`. (`f_k′ = 0` exactly only for a constant `f_k`, whose
+    /// `f_k″ = 0` too: the jets then give the nested dual numbers' bits.)
+    fn box_jets(&self, x: Interval) -> [Jet2<Interval>; 5] {
         let values = self.box_values(x);
         let mut cache = self.f.last_box.borrow_mut();
         let b = cache.as_mut().expect("box_values fills the cache");
@@ -275,13 +272,11 @@ impl ClosedForm {
             .derivatives
             .get_or_insert_with(|| std::array::from_fn(|k| self.f.views[k].enclose_derivatives(x)));
         std::array::from_fn(|k| {
-            let (d1, d2) = derivatives[k];
-            Dual {
-                v: Dual {
-                    v: values[k],
-                    d: d1,
-                },
-                d: Dual { v: d1, d: d2 },
+            let (d, dd) = derivatives[k];
+            Jet2 {
+                v: values[k],
+                d,
+                dd,
             }
         })
     }
@@ -295,7 +290,7 @@ impl SignModel for ClosedForm {
     }
 
     fn enclose_second(&self, x: Interval) -> Interval {
-        self.of(&self.box_jets(x)).d.d
+        self.of(&self.box_jets(x)).dd
     }
 
     fn exact_jet_at(&self, m: &Rat) -> ExactJet {
@@ -429,6 +424,60 @@ mod tests {
 
     fn poly(c: &[i64]) -> ZPoly {
         ZPoly::from_i64s(c)
+    }
+
+    /// An interval with an exact zero, huge, infinite or ordinary ends.
+    fn any_interval() -> impl Strategy<Value = Interval> {
+        let end = prop_oneof![
+            Just(0.0),
+            Just(-0.0),
+            Just(f64::INFINITY),
+            Just(f64::NEG_INFINITY),
+            Just(1e300),
+            Just(-1e300),
+            -10.0f64..10.0,
+            -1e-300f64..1e-300,
+        ];
+        (end.clone(), end).prop_map(|(a, b)| Interval::new(a.min(b), a.max(b)))
+    }
+
+    /// The jet of a polynomial: `f′ = 0` exactly only with `f″ = 0`.
+    fn leaf() -> impl Strategy<Value = Jet2<Interval>> {
+        let zero = Interval::point(0.0);
+        (any_interval(), any_interval(), any_interval(), 0..4).prop_map(move |(v, d, dd, kind)| {
+            match kind {
+                0 => Jet2 {
+                    v,
+                    d: zero,
+                    dd: zero,
+                },
+                1 => Jet2 { v, d, dd: zero },
+                _ => Jet2 { v, d, dd },
+            }
+        })
+    }
+
+    fn bits(i: Interval) -> (u64, u64) {
+        (i.lo.to_bits(), i.hi.to_bits())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+        /// The closed forms over flat jets are those over nested dual
+        /// numbers bit for bit (both copies of the first derivative),
+        /// with exact zeros, infinities and NaN-born whole lines.
+        #[test]
+        fn jets_are_the_nested_duals(leaves in proptest::array::uniform5(leaf())) {
+            let nested = leaves.map(|j| Dual { v: Dual { v: j.v, d: j.d }, d: Dual { v: j.d, d: j.dd } });
+            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                let flat = closed_form(&leaves, q).expect("a closed form");
+                let deep = closed_form(&nested, q).expect("a closed form");
+                prop_assert_eq!(bits(flat.v), bits(deep.v.v));
+                prop_assert_eq!(bits(flat.d), bits(deep.v.d));
+                prop_assert_eq!(bits(flat.d), bits(deep.d.v));
+                prop_assert_eq!(bits(flat.dd), bits(deep.d.d));
+            }
+        }
     }
 
     proptest! {

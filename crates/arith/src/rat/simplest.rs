@@ -82,17 +82,12 @@ impl Rat {
         } else {
             (l, h, false)
         };
-        // 0 < l <= h: the largest s with ⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋.
+        // 0 < l <= h: the largest s with ⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋, i.e.
+        // (as 0 <= l − 1 < h) the highest bit where h and l − 1 differ.
         let below = &l - &Int::one();
-        let (mut good, mut bad) = (0u64, h.bits() + 1);
-        while bad - good > 1 {
-            let mid = good + (bad - good) / 2;
-            if h.shr_floor(mid) > below.shr_floor(mid) {
-                good = mid;
-            } else {
-                bad = mid;
-            }
-        }
+        let good = h
+            .highest_differing_bit(&below)
+            .expect("h > l − 1 differ somewhere");
         if good >= k {
             // Integers inside: the least one, as the search below picks.
             return Rat::from_int(-(-&lo.num).shr_floor(kl));
@@ -179,6 +174,63 @@ mod tests {
         assert_eq!(s((7, 10), (3, 4)), Rat::from_frac(3, 4));
         assert_eq!(s((22, 7), (22, 7)), Rat::from_frac(22, 7));
         assert_eq!(s((314, 100), (315, 100)), Rat::from_frac(22, 7));
+    }
+
+    /// The level search [`Rat::dyadic_in_dyadic`] replaced by a bit
+    /// comparison: bisection for the largest `s` with
+    /// `⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋`, then the same point.
+    fn dyadic_in_dyadic_bisection(lo: &Rat, kl: u64, hi: &Rat, kh: u64) -> Rat {
+        let k = kl.max(kh);
+        let (l, h) = (lo.num.shl(k - kl), hi.num.shl(k - kh));
+        if l.signum() <= 0 && h.signum() >= 0 {
+            return Rat::zero();
+        }
+        let (l, h, negative) = if h.is_negative() {
+            (-h, -l, true)
+        } else {
+            (l, h, false)
+        };
+        let below = &l - &Int::one();
+        let (mut good, mut bad) = (0u64, h.bits() + 1);
+        while bad - good > 1 {
+            let mid = good + (bad - good) / 2;
+            if h.shr_floor(mid) > below.shr_floor(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        if good >= k {
+            return Rat::from_int(-(-&lo.num).shr_floor(kl));
+        }
+        let m = h.shr_floor(good).shl(good);
+        Rat::dyadic(if negative { -m } else { m }, k)
+    }
+
+    /// A dyadic with a numerator of up to four 64-bit digits.
+    fn long_dyadic() -> impl Strategy<Value = Rat> {
+        (
+            any::<bool>(),
+            proptest::collection::vec(any::<u64>(), 0..4),
+            0u64..300,
+        )
+            .prop_map(|(neg, limbs, k)| Rat::dyadic(Int::from_u64_limbs(neg, &limbs), k))
+    }
+
+    proptest! {
+        /// The highest differing bit gives the bisection's point, for long
+        /// ends of either sign and widths from zero up (nearby ends share
+        /// long prefixes).
+        #[test]
+        fn dyadic_in_dyadic_is_the_bisection(lo in long_dyadic(), w in long_dyadic(), near in any::<bool>()) {
+            let w = if near { w.mul_pow2(-200).abs() } else { w.abs() };
+            let hi = &lo + &w;
+            let (kl, kh) = (lo.dyadic_exponent().unwrap(), hi.dyadic_exponent().unwrap());
+            prop_assert_eq!(
+                Rat::dyadic_in_dyadic(&lo, kl, &hi, kh),
+                dyadic_in_dyadic_bisection(&lo, kl, &hi, kh)
+            );
+        }
     }
 
     proptest! {
