@@ -150,9 +150,18 @@ impl SmallPoly {
     /// value.
     pub fn gcd_with(&self, g: u128) -> Option<u128> {
         (!self.overflow).then(|| {
-            self.c[..self.len].iter().fold(g, |g, v| {
-                crate::zpoly::division::gcd_u128(g, v.unsigned_abs())
-            })
+            // A gcd 1 stays 1.
+            self.c[..self.len]
+                .iter()
+                .try_fold(g, |g, v| {
+                    let g = crate::zpoly::division::gcd_u128(g, v.unsigned_abs());
+                    if g == 1 {
+                        Err(g)
+                    } else {
+                        Ok(g)
+                    }
+                })
+                .unwrap_or_else(|g| g)
         })
     }
 
@@ -234,10 +243,10 @@ impl SmallPoly {
     /// assert!(!p.div_exact_int(4).is_exact());
     /// ```
     pub fn div_exact_int(&self, k: i128) -> SmallPoly {
+        // One division: exact iff the truncated quotient multiplies back
+        // (|q·k| <= |x|, no overflow).
         self.zip(&SmallPoly::zero(), move |x, _| {
-            (x.checked_rem(k) == Some(0))
-                .then(|| x.checked_div(k))
-                .flatten()
+            x.checked_div(k).filter(|&q| q * k == x)
         })
     }
 
