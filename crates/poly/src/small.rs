@@ -337,10 +337,21 @@ impl SmallPoly {
             return;
         }
         let terms = x.len.min(y.len) as u32;
-        let safe = self.max_bits() <= 126
-            && x.max_bits() + y.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
+        let (xb, yb) = (x.max_bits(), y.max_bits());
+        let safe = self.max_bits() <= 126 && xb + yb + u64::from(32 - terms.leading_zeros()) <= 126;
+        // Factors below 2^63 in size: one widening word multiplication per
+        // term rather than a full 128-bit one (the same products).
+        let narrow = safe && xb <= 63 && yb <= 63;
         for (i, &xi) in x.c[..x.len].iter().enumerate() {
             if xi == 0 {
+                continue;
+            }
+            if narrow {
+                // |x_i| < 2^63: its negation fits i64.
+                let xi = if negate { -xi } else { xi } as i64;
+                for (slot, &yj) in self.c[i..].iter_mut().zip(&y.c[..y.len]) {
+                    *slot += i128::from(xi) * i128::from(yj as i64);
+                }
                 continue;
             }
             if safe {
