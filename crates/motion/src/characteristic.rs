@@ -83,16 +83,19 @@ impl CharPoly {
         let f = if na.max(nb) <= ma.max(mb) {
             // The quadrics themselves in i128 when they fit (they usually
             // do when f does).
-            let small = a.quadric_small().zip(b.quadric_small());
-            let f = small
-                .filter(|(qa, qb)| worth_small(sizes(&[qa, qb]), 4))
-                .and_then(|(qa, qb)| lift(characteristic(&qa, &qb)));
-            f.unwrap_or_else(|| {
+            let (sa, sb) = (a.quadric_small(), b.quadric_small());
+            let small = match (&sa, &sb) {
+                (Some(qa), Some(qb)) if worth_small(sizes(&[qa, qb]), 4) => {
+                    exact(characteristic(qa, qb))
+                }
+                _ => None,
+            };
+            small.map(Quartic::Small).unwrap_or_else(|| {
                 let (qa, qb) = (a.quadric(), b.quadric());
                 worth_small(sizes(&[&qa, &qb]), 4)
-                    .then(|| lift(characteristic(&lowered(&qa), &lowered(&qb))))
+                    .then(|| exact(characteristic(&lowered(&qa), &lowered(&qb))))
                     .flatten()
-                    .unwrap_or_else(|| characteristic(&qa, &qb))
+                    .map_or_else(|| Quartic::Exact(characteristic(&qa, &qb)), Quartic::Small)
             })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
@@ -101,13 +104,19 @@ impl CharPoly {
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
                     let [dx, dy] = [da, db].map(|d| d.each_ref().map(SmallPoly::lowered));
-                    lift(placed_characteristic(&x, &dx, &y, &dy))
+                    exact(placed_characteristic(&x, &dx, &y, &dy))
                 })
                 .flatten()
-                .unwrap_or_else(|| placed_characteristic(&pa, da, &pb, db))
+                .map_or_else(
+                    || Quartic::Exact(placed_characteristic(&pa, da, &pb, db)),
+                    Quartic::Small,
+                )
         };
         CharPoly {
-            coeffs: normalise_with(f, candidates),
+            coeffs: match f {
+                Quartic::Small(f) => normalise_small(&f, candidates),
+                Quartic::Exact(f) => normalise_with(f, candidates),
+            },
         }
     }
 
@@ -212,6 +221,19 @@ fn worth_small(entries: impl Iterator<Item = (usize, u64)> + Clone, factors: usi
     degree * factors <= SmallPoly::MAX_DEGREE && (bits + degree) * factors + 24 <= 126
 }
 
+/// `f` unless a [`SmallPoly`] step overflowed.
+fn exact(f: [SmallPoly; 5]) -> Option<[SmallPoly; 5]> {
+    f.iter().all(SmallPoly::is_exact).then_some(f)
+}
+
+/// `f = det(λA + B)` from one of the two routes of
+/// [`CharPoly::from_placed`]: in `i128` (exact) or over [`ZPoly`].
+#[allow(clippy::large_enum_variant)]
+enum Quartic {
+    Small([SmallPoly; 5]),
+    Exact([ZPoly; 5]),
+}
+
 /// The exact coefficients, unless a [`SmallPoly`] step overflowed.
 fn lift(f: [SmallPoly; 5]) -> Option<[ZPoly; 5]> {
     let v: Option<Vec<ZPoly>> = f.iter().map(SmallPoly::to_zpoly).collect();
@@ -297,6 +319,17 @@ trait IntegerPoly: RingOps {
     fn quotient(&self, d: &Self) -> Option<Option<Self>>;
     /// `(degree, bits of the longest coefficient)`.
     fn size(&self) -> (usize, u64);
+    /// `(v, p/π^v)` with `v` the multiplicity of `π` in `self ≠ 0`
+    /// ([`multiplicity`]); `None` on an overflow.
+    fn split(&self, pi: &Self) -> Option<(usize, Self)> {
+        multiplicity(self, pi)
+    }
+    /// `self·π^e`, `None` on an overflow.
+    fn times_power(&self, pi: &Self, e: u32) -> Option<Self>;
+    /// The polynomials divided by the gcd of all their coefficients
+    /// (a positive integer; unchanged when it is 0 or 1), `None` on an
+    /// overflow.
+    fn without_content(c: [Self; 5]) -> Option<[Self; 5]>;
 }
 
 impl IntegerPoly for ZPoly {
@@ -305,6 +338,30 @@ impl IntegerPoly for ZPoly {
     }
     fn size(&self) -> (usize, u64) {
         (self.degree().unwrap_or(0), self.max_bits())
+    }
+    /// In `i128` when `self` and `π` fit ([`SmallPoly`]), else exactly.
+    fn split(&self, pi: &Self) -> Option<(usize, Self)> {
+        SmallPoly::from_zpoly(pi)
+            .zip(SmallPoly::from_zpoly(self))
+            .and_then(|(pi, p)| {
+                let (v, q) = multiplicity(&p, &pi)?;
+                Some((v, q.to_zpoly()?))
+            })
+            .or_else(|| multiplicity(self, pi))
+    }
+    /// In `i128` when the product fits ([`SmallPoly`]), else exactly.
+    fn times_power(&self, pi: &Self, e: u32) -> Option<Self> {
+        SmallPoly::from_zpoly(self)
+            .zip(SmallPoly::from_zpoly(pi))
+            .and_then(|(q, pi)| times_power(&q, &pi, e).to_zpoly())
+            .or_else(|| Some(times_power(self, pi, e)))
+    }
+    fn without_content(c: [Self; 5]) -> Option<[Self; 5]> {
+        let g = ZPoly::common_content(&c);
+        if g.is_zero() || g.is_one() {
+            return Some(c);
+        }
+        Some(c.map(|p| p.div_exact_int(&g)))
     }
 }
 
@@ -318,6 +375,20 @@ impl IntegerPoly for SmallPoly {
     fn size(&self) -> (usize, u64) {
         (self.degree().unwrap_or(0), self.max_bits())
     }
+    fn times_power(&self, pi: &Self, e: u32) -> Option<Self> {
+        let p = times_power(self, pi, e);
+        p.is_exact().then_some(p)
+    }
+    fn without_content(c: [Self; 5]) -> Option<[Self; 5]> {
+        let g = c.iter().try_fold(0, |g, p| p.gcd_with(g))?;
+        if g <= 1 {
+            return Some(c);
+        }
+        // g divides a coefficient below 2^127 in size: it fits i128.
+        let g = i128::try_from(g).ok()?;
+        let c = c.map(|p| p.div_exact_int(g));
+        c.iter().all(SmallPoly::is_exact).then_some(c)
+    }
 }
 
 /// How often `pi` divides `p` (`p ≠ 0`), and the cofactor `p/π^v`; `None`
@@ -330,14 +401,6 @@ fn multiplicity<P: IntegerPoly>(p: &P, pi: &P) -> Option<(usize, P)> {
         v += 1;
     }
     Some((v, q))
-}
-
-/// A cofactor `c_k/π^v_k` from the `i128` route or the exact one (five of
-/// them live on the stack for one loop; boxing would only add heap traffic).
-#[allow(clippy::large_enum_variant)]
-enum Cofactor {
-    Small(SmallPoly),
-    Exact(ZPoly),
 }
 
 /// `c·π^e` (a [`SmallPoly`] result must still be checked with
@@ -385,33 +448,54 @@ pub fn normalise(f: [ZPoly; 5]) -> [ZPoly; 5] {
 /// `det A · det B` must divide a product of them (they are refined into a
 /// coprime basis here).
 pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
+    normalise_in(f, &positive_basis(candidates)).expect("ZPoly arithmetic is exact")
+}
+
+/// [`normalise_with`] of an exact `f` given in `i128` ([`SmallPoly`]):
+/// the whole normalisation in `i128` when every number on the way fits,
+/// else over [`ZPoly`]; the same polynomial either way.
+fn normalise_small(f: &[SmallPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
+    let basis = positive_basis(candidates);
+    basis
+        .iter()
+        .map(SmallPoly::from_zpoly)
+        .collect::<Option<Vec<_>>>()
+        .and_then(|pis| normalise_in(f.clone(), &pis))
+        .and_then(lift)
+        .unwrap_or_else(|| {
+            let f = lift(f.clone()).expect("an exact f");
+            normalise_in(f, &basis).expect("ZPoly arithmetic is exact")
+        })
+}
+
+/// The coprime basis of the candidates ([`coprime_basis`]), each made
+/// positive on the span (it divides det A or det B, which do not vanish
+/// there, so its sign at `u = 1/2` is its sign throughout).
+fn positive_basis(candidates: Vec<ZPoly>) -> Vec<ZPoly> {
+    let half = Rat::from_frac(1, 2);
+    coprime_basis(candidates)
+        .into_iter()
+        .map(|pi| if pi.sign_at(&half) < 0 { -&pi } else { pi })
+        .collect()
+}
+
+/// The normalisation of the module docs on `[c_4, …, c_0]` over `P`, with
+/// the coprime, positive factors `basis`; `None` if a step overflowed `P`.
+fn normalise_in<P: IntegerPoly>(f: [P; 5], basis: &[P]) -> Option<[P; 5]> {
     // Low → high for indexing by the power of λ.
-    let mut c: [ZPoly; 5] = std::array::from_fn(|k| f[4 - k].clone());
-    for pi in coprime_basis(candidates) {
-        // Positive on the span (it divides det A or det B, which do not vanish there).
-        let pi = if pi.sign_at(&Rat::from_frac(1, 2)) < 0 {
-            -&pi
-        } else {
-            pi
-        };
-        // v_k and the cofactor c_k/π^v_k, in i128 when the numbers fit,
-        // else in ZPoly.
-        let small_pi = SmallPoly::from_zpoly(&pi);
-        let split: [Option<(usize, Cofactor)>; 5] = std::array::from_fn(|k| {
-            (!c[k].is_zero()).then(|| {
-                small_pi
-                    .as_ref()
-                    .and_then(|pi| multiplicity(&SmallPoly::from_zpoly(&c[k])?, pi))
-                    .map(|(v, q)| (v, Cofactor::Small(q)))
-                    .unwrap_or_else(|| {
-                        let (v, q) = multiplicity(&c[k], &pi).expect("ZPoly division is exact");
-                        (v, Cofactor::Exact(q))
-                    })
-            })
-        });
+    let mut c = f;
+    c.reverse();
+    for pi in basis {
+        // v_k and the cofactor c_k/π^v_k.
+        let mut split: [Option<(usize, P)>; 5] = Default::default();
+        for (part, ck) in split.iter_mut().zip(&c) {
+            if !ck.is_zero() {
+                *part = Some(ck.split(pi)?);
+            }
+        }
         let v: [Option<usize>; 5] = std::array::from_fn(|k| split[k].as_ref().map(|(v, _)| *v));
-        let degs: [usize; 5] = std::array::from_fn(|k| c[k].degree().unwrap_or(0));
-        let e = best_exponents(&v, &degs, pi.degree().unwrap_or(0));
+        let degs: [usize; 5] = std::array::from_fn(|k| c[k].size().0);
+        let e = best_exponents(&v, &degs, pi.size().0);
         for (k, part) in split.iter().enumerate() {
             // c_k·π^e_k = cofactor·π^(v_k + e_k), a product since e_k >= −v_k
             // (one more product rather than dividing c_k again).
@@ -419,25 +503,13 @@ pub fn normalise_with(f: [ZPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
             if e[k] == 0 {
                 continue;
             }
-            let total = (*vk as i64 + e[k]) as u32;
-            c[k] = match cofactor {
-                Cofactor::Small(q) => small_pi
-                    .as_ref()
-                    .and_then(|pi| times_power(q, pi, total).to_zpoly())
-                    .or_else(|| Some(times_power(&q.to_zpoly()?, &pi, total))),
-                Cofactor::Exact(q) => Some(times_power(q, &pi, total)),
-            }
-            .expect("an exact cofactor times a power of π");
+            c[k] = cofactor.times_power(pi, (*vk as i64 + e[k]) as u32)?;
         }
     }
     // The common integer content (a positive constant).
-    let g = ZPoly::common_content(&c);
-    if !g.is_zero() && !g.is_one() {
-        for p in c.iter_mut() {
-            *p = p.div_exact_int(&g);
-        }
-    }
-    std::array::from_fn(|k| c[4 - k].clone())
+    let mut c = P::without_content(c)?;
+    c.reverse();
+    Some(c)
 }
 
 #[cfg(test)]
@@ -616,6 +688,13 @@ mod tests {
             let huge = Int::from(3).pow(90);
             let big: [ZPoly; 5] = f.each_ref().map(|c| c.mul_int(&huge));
             proptest::prop_assert!(big.iter().all(|c| SmallPoly::from_zpoly(c).is_none() || c.is_zero()));
+            // The whole normalisation in i128 (f given as SmallPoly) too.
+            let small = f.each_ref().map(|c| SmallPoly::from_zpoly(c).expect("short"));
+            let candidates = [&f[0], &f[4]]
+                .iter()
+                .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
+                .collect();
+            proptest::prop_assert_eq!(normalise_small(&small, candidates), normalise(f.clone()));
             proptest::prop_assert_eq!(normalise(f), normalise(big));
         }
     }

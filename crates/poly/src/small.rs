@@ -67,14 +67,20 @@ impl SmallPoly {
     }
 
     /// The polynomial `c[..len]` (the slots past `len` zero), trimmed.
-    fn from_array(c: [i128; CAP], mut len: usize) -> SmallPoly {
-        while len > 0 && c[len - 1] == 0 {
-            len -= 1;
-        }
-        SmallPoly {
+    fn from_array(c: [i128; CAP], len: usize) -> SmallPoly {
+        let mut p = SmallPoly {
             c,
             len,
             overflow: false,
+        };
+        p.trim();
+        p
+    }
+
+    /// Drops trailing zero coefficients from the length.
+    fn trim(&mut self) {
+        while self.len > 0 && self.c[self.len - 1] == 0 {
+            self.len -= 1;
         }
     }
 
@@ -144,9 +150,18 @@ impl SmallPoly {
     /// value.
     pub fn gcd_with(&self, g: u128) -> Option<u128> {
         (!self.overflow).then(|| {
-            self.c[..self.len].iter().fold(g, |g, v| {
-                crate::zpoly::division::gcd_u128(g, v.unsigned_abs())
-            })
+            // A gcd 1 stays 1.
+            self.c[..self.len]
+                .iter()
+                .try_fold(g, |g, v| {
+                    let g = crate::zpoly::division::gcd_u128(g, v.unsigned_abs());
+                    if g == 1 {
+                        Err(g)
+                    } else {
+                        Ok(g)
+                    }
+                })
+                .unwrap_or_else(|g| g)
         })
     }
 
@@ -179,19 +194,27 @@ impl SmallPoly {
         }
         let dl = d.c[dd];
         let mut r = self.c;
-        let mut q = [0; CAP];
+        // The quotient is built in place (no copy of the slots on return).
+        let mut q = SmallPoly::zero();
         for k in (0..self.len - dd).rev() {
             let top = r[k + dd];
             if top == 0 {
                 continue;
             }
-            let Some(rem) = top.checked_rem(dl) else {
-                return Some(SmallPoly::overflowed());
+            // One division: `top = qk·dl` exactly iff the truncated
+            // quotient multiplies back (|qk·dl| <= |top|, no overflow).
+            let qk = match (i64::try_from(top), i64::try_from(dl)) {
+                // Machine division when both fit a word (`dl ≠ 0`; a
+                // divisor −1 goes the long way, i64::MIN / −1 overflows).
+                (Ok(t), Ok(l)) if l != -1 => i128::from(t / l),
+                _ => match top.checked_div(dl) {
+                    Some(qk) => qk,
+                    None => return Some(SmallPoly::overflowed()),
+                },
             };
-            if rem != 0 {
+            if qk * dl != top {
                 return None;
             }
-            let qk = top / dl; // exact, and i128::MIN / −1 was caught above
             for (ri, &di) in r[k..k + dd].iter_mut().zip(&d.c) {
                 match qk.checked_mul(di).and_then(|p| ri.checked_sub(p)) {
                     Some(v) => *ri = v,
@@ -199,12 +222,32 @@ impl SmallPoly {
                 }
             }
             r[k + dd] = 0;
-            q[k] = qk;
+            q.c[k] = qk;
         }
         if r[..dd].iter().any(|&x| x != 0) {
             return None;
         }
-        Some(SmallPoly::from_array(q, self.len - dd))
+        q.len = self.len - dd;
+        q.trim();
+        Some(q)
+    }
+
+    /// `self/k` for a `k ≠ 0` dividing every coefficient exactly; a
+    /// coefficient `k` does not divide (or `k = 0`) marks the result
+    /// overflowed (the exact value is not in `ℤ[t]`).
+    ///
+    /// ```
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let p = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[6, -9])).unwrap();
+    /// assert_eq!(p.div_exact_int(3).to_zpoly(), Some(ZPoly::from_i64s(&[2, -3])));
+    /// assert!(!p.div_exact_int(4).is_exact());
+    /// ```
+    pub fn div_exact_int(&self, k: i128) -> SmallPoly {
+        // One division: exact iff the truncated quotient multiplies back
+        // (|q·k| <= |x|, no overflow).
+        self.zip(&SmallPoly::zero(), move |x, _| {
+            x.checked_div(k).filter(|&q| q * k == x)
+        })
     }
 
     /// Coefficientwise `op`, overflow propagated.
@@ -212,15 +255,16 @@ impl SmallPoly {
         if self.overflow || o.overflow {
             return SmallPoly::overflowed();
         }
-        let len = self.len.max(o.len);
-        let mut c = [0; CAP];
-        for (slot, (&x, &y)) in c.iter_mut().zip(self.c.iter().zip(&o.c)).take(len) {
+        let mut out = SmallPoly::zero();
+        out.len = self.len.max(o.len);
+        for (slot, (&x, &y)) in out.c.iter_mut().zip(self.c.iter().zip(&o.c)).take(out.len) {
             match op(x, y) {
                 Some(v) => *slot = v,
                 None => return SmallPoly::overflowed(),
             }
         }
-        SmallPoly::from_array(c, len)
+        out.trim();
+        out
     }
 }
 
@@ -249,40 +293,12 @@ impl RingOps for SmallPoly {
     fn minus(&self, o: &Self) -> Self {
         self.zip(o, i128::checked_sub)
     }
+    /// `0 + self·o` in place ([`RingOps::add_product`] on a zero built
+    /// where the result lives: no copy of the slots on return).
     fn times(&self, o: &Self) -> Self {
-        if self.overflow || o.overflow {
-            return SmallPoly::overflowed();
-        }
-        if self.len == 0 || o.len == 0 {
-            return SmallPoly::zero();
-        }
-        let len = self.len + o.len - 1;
-        if len > CAP {
-            return SmallPoly::overflowed();
-        }
-        let mut c = [0i128; CAP];
-        // No term and no running sum can leave i128 when the sizes say so:
-        // then plain products, else checked ones.
-        let terms = self.len.min(o.len) as u32;
-        let safe = self.max_bits() + o.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
-        for (i, &x) in self.c[..self.len].iter().enumerate() {
-            if x == 0 {
-                continue;
-            }
-            if safe {
-                for (slot, &y) in c[i..].iter_mut().zip(&o.c[..o.len]) {
-                    *slot += x * y;
-                }
-                continue;
-            }
-            for (slot, &y) in c[i..].iter_mut().zip(&o.c[..o.len]) {
-                match x.checked_mul(y).and_then(|p| slot.checked_add(p)) {
-                    Some(v) => *slot = v,
-                    None => return SmallPoly::overflowed(),
-                }
-            }
-        }
-        SmallPoly::from_array(c, len)
+        let mut out = SmallPoly::zero();
+        out.accumulate(self, o, false);
+        out
     }
     fn negated(&self) -> Self {
         self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
@@ -294,6 +310,20 @@ impl RingOps for SmallPoly {
     /// an overflow (or a product of degree above the capacity) marks the
     /// result, as `self.plus(&x.times(y))` would.
     fn add_product(&mut self, x: &Self, y: &Self, negate: bool) {
+        self.accumulate(x, y, negate);
+    }
+    /// Exact division; a coefficient `k` does not divide counts as an
+    /// overflow (the exact value is not in `ℤ[t]`).
+    fn div_small(&self, k: i64) -> Self {
+        self.div_exact_int(k.into())
+    }
+}
+
+impl SmallPoly {
+    /// [`RingOps::add_product`], inlined into [`RingOps::times`] so that
+    /// the product is built where it is returned.
+    #[inline(always)]
+    fn accumulate(&mut self, x: &Self, y: &Self, negate: bool) {
         if self.overflow || x.overflow || y.overflow {
             *self = SmallPoly::overflowed();
             return;
@@ -307,10 +337,21 @@ impl RingOps for SmallPoly {
             return;
         }
         let terms = x.len.min(y.len) as u32;
-        let safe = self.max_bits() <= 126
-            && x.max_bits() + y.max_bits() + u64::from(32 - terms.leading_zeros()) <= 126;
+        let (xb, yb) = (x.max_bits(), y.max_bits());
+        let safe = self.max_bits() <= 126 && xb + yb + u64::from(32 - terms.leading_zeros()) <= 126;
+        // Factors below 2^63 in size: one widening word multiplication per
+        // term rather than a full 128-bit one (the same products).
+        let narrow = safe && xb <= 63 && yb <= 63;
         for (i, &xi) in x.c[..x.len].iter().enumerate() {
             if xi == 0 {
+                continue;
+            }
+            if narrow {
+                // |x_i| < 2^63: its negation fits i64.
+                let xi = if negate { -xi } else { xi } as i64;
+                for (slot, &yj) in self.c[i..].iter_mut().zip(&y.c[..y.len]) {
+                    *slot += i128::from(xi) * i128::from(yj as i64);
+                }
                 continue;
             }
             if safe {
@@ -338,21 +379,8 @@ impl RingOps for SmallPoly {
                 }
             }
         }
-        let mut n = self.len.max(len);
-        while n > 0 && self.c[n - 1] == 0 {
-            n -= 1;
-        }
-        self.len = n;
-    }
-    /// Exact division; a coefficient `k` does not divide counts as an
-    /// overflow (the exact value is not in `ℤ[t]`).
-    fn div_small(&self, k: i64) -> Self {
-        let k = k as i128;
-        self.zip(&SmallPoly::zero(), move |x, _| {
-            (x.checked_rem(k) == Some(0))
-                .then(|| x.checked_div(k))
-                .flatten()
-        })
+        self.len = self.len.max(len);
+        self.trim();
     }
 }
 

@@ -4,10 +4,20 @@
 use super::ZPoly;
 use ccd_arith::Int;
 
-/// Binary gcd (`gcd(0, 0) = 0`).
-pub(crate) fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
-    if a == 0 || b == 0 {
-        return a | b;
+/// Binary gcd (`gcd(0, 0) = 0`). When one operand is much shorter than
+/// the other (a running content against a long coefficient), Euclid's
+/// first step `gcd(a, b) = gcd(a, b mod a)` comes first: one division
+/// instead of a chain of subtractions as long as `b`.
+pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
+    let (mut a, mut b) = if a <= b { (a, b) } else { (b, a) };
+    if a == 0 {
+        return b;
+    }
+    if a.leading_zeros() > b.leading_zeros() + 8 {
+        b %= a;
+        if b == 0 {
+            return a;
+        }
     }
     let shift = (a | b).trailing_zeros();
     a >>= a.trailing_zeros();
@@ -219,6 +229,20 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The machine gcd (with its first Euclid step on operands of very
+        /// different lengths) against the big-integer one.
+        #[test]
+        fn machine_gcd_agrees(a in any::<u128>(), b in any::<u128>(), sa in 0u32..128, sb in 0u32..128, k in 1u64..1000) {
+            let (a, b) = (a >> sa, b >> sb);
+            for (x, y) in [(a, b), (b, a), (a, a.wrapping_mul(u128::from(k)) >> 10), (u128::from(k), b), (1, b), (0, b)] {
+                let g = gcd_u128(x, y);
+                let expect = Int::from_i128(x as i128).gcd(&Int::from_i128(y as i128));
+                if x >> 127 == 0 && y >> 127 == 0 {
+                    prop_assert_eq!(Int::from_i128(g as i128), expect);
+                }
+            }
+        }
 
         #[test]
         fn exact_division_inverts_products(a in zpoly(10, 200), b in zpoly_deg(0, 8, 200), c in any::<i64>()) {
