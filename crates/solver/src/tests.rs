@@ -388,3 +388,25 @@ fn ball_jets_below_the_f64_range_decide_nothing_false() {
     assert_eq!(q.sign_at(root.hi()), 1);
     assert_eq!(root.sign_of(&q), 1);
 }
+
+/// The image proof of `q(α) ≠ 0` needs `p`'s degree kept modulo the prime:
+/// here `lc(p)` is a multiple of [`Residues`]' prime, the images are
+/// coprime although `p` and `q` share the root `1/P`, and the exact gcd
+/// must decide (from the soundness review; without the degree check the
+/// sign at the shared root is never decided).
+#[test]
+fn image_proof_needs_the_kept_degree() {
+    use ccd_poly::Residues;
+    let prime = Int::from_u64(0x3fff_ffff_feb0_0001); // Residues' field prime
+    let lin = ZPoly::new(vec![Int::from(-1), prime]); // P·t − 1, root 1/P
+    let p = &lin * &ZPoly::from_i64s(&[-3, 4]);
+    let q = &lin * &ZPoly::from_i64s(&[5, 1]);
+    assert!(Residues::of(&p).proves_coprime(&Residues::of(&q)));
+    assert_ne!(Residues::of(&p).degree(), p.degree());
+    let mut roots: Vec<_> = crate::isolate(&p, &Rat::zero(), &Rat::one())
+        .unwrap()
+        .collect();
+    assert_eq!(roots.len(), 2);
+    assert_eq!(roots[0].sign_of(&q), 0);
+    assert_ne!(roots[1].sign_of(&q), 0);
+}
