@@ -130,6 +130,20 @@ fn divide_binomials(c: Vec<Int>) -> (Vec<Int>, Rat) {
     (beta, Rat::new(Int::one(), l).expect("positive lcm"))
 }
 
+/// The sign changes of a sequence of signs, zeros skipped (Descartes'
+/// rule of signs counts these).
+pub fn sign_variations(signs: impl IntoIterator<Item = i32>) -> usize {
+    let mut last = 0;
+    let mut count = 0;
+    for s in signs.into_iter().filter(|&s| s != 0) {
+        if last != 0 && s != last {
+            count += 1;
+        }
+        last = s;
+    }
+    count
+}
+
 /// `β_i · C(n, i)`.
 fn times_binomials(beta: &[Int]) -> Vec<Int> {
     beta.iter()
@@ -265,6 +279,22 @@ impl Bernstein {
         // `big_p` is primitive already: no second content gcd.
         Bernstein::normalised(lo.clone(), hi.clone(), &f / &kappa, beta, false)
     }
+    /// The signs of `p`'s Bernstein coefficients on `[lo, hi]` (those of
+    /// [`Bernstein::from_power`]'s coefficients), without `κ`, the division
+    /// by the binomials or any content: the coefficients of
+    /// `d^n·p(lo + w·u)` after reverse–shift–reverse are `C(n, i)·b_i`
+    /// times a positive number.
+    pub fn signs_of_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Vec<i32> {
+        assert!(lo < hi, "Bernstein::signs_of_power: need lo < hi");
+        if p.is_zero() {
+            return vec![0];
+        }
+        let big_p = p.compose_affine_multiple(lo, &(hi - lo));
+        reverse_shift_reverse(big_p.into_coeffs(), 1)
+            .iter()
+            .map(Int::signum)
+            .collect()
+    }
     /// The Bernstein form of a rational polynomial: that of its primitive
     /// part, times its scale.
     pub fn from_qpoly(p: &QPoly, lo: &Rat, hi: &Rat) -> Bernstein {
@@ -381,15 +411,7 @@ impl Bernstein {
     /// basis it bounds the number of roots in `(lo, hi)` counted with
     /// multiplicity, and has the same parity; `0` and `1` are exact counts.
     pub fn sign_variations(&self) -> usize {
-        let mut last = 0;
-        let mut count = 0;
-        for s in self.coeffs.iter().map(Int::signum).filter(|&s| s != 0) {
-            if last != 0 && s != last {
-                count += 1;
-            }
-            last = s;
-        }
-        count
+        sign_variations(self.coeffs.iter().map(Int::signum))
     }
     /// The exact value at the global parameter `t`: with
     /// `(t − lo)/(hi − lo) = x/y`, `value = scale·Σ C(n,i) β_i x^i (y − x)^(n−i) / y^n`.
@@ -543,6 +565,15 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// The signs alone are those of the full conversion's coefficients.
+        #[test]
+        fn signs_of_power_are_the_coefficients_signs(p in zpoly(10, 150), (lo, hi) in interval()) {
+            let b = Bernstein::from_power(&p, &lo, &hi);
+            let signs = Bernstein::signs_of_power(&p, &lo, &hi);
+            prop_assert_eq!(&signs, &b.coeffs.iter().map(Int::signum).collect::<Vec<_>>());
+            prop_assert_eq!(sign_variations(signs.iter().copied()), b.sign_variations());
+        }
 
         #[test]
         fn conversion_round_trip_and_values(p in zpoly(10, 150), (lo, hi) in interval(), t in rat()) {

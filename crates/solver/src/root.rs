@@ -5,7 +5,7 @@
 
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
 use ccd_arith::{DwBall, Int, Interval, Rat, RingOps};
-use ccd_poly::{Bernstein, ZPoly};
+use ccd_poly::{sign_variations, Bernstein, ZPoly};
 use std::sync::Arc;
 
 /// The round of [`RealRoot::sign_with`] from which, once `q(α) ≠ 0` is
@@ -625,9 +625,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
             let scheduled =
                 round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
             if nonzero && (scheduled || !second.is_finite()) {
-                let b = Bernstein::from_power(model.exact(), &self.lo, &self.hi);
-                if b.sign_variations() == 0 && b.sign_at_lo() != 0 {
-                    return b.sign_at_lo();
+                let b = Bernstein::signs_of_power(model.exact(), &self.lo, &self.hi);
+                if sign_variations(b.iter().copied()) == 0 && b[0] != 0 {
+                    return b[0];
                 }
             }
             // 16 bits a round while the floating-point forms may still

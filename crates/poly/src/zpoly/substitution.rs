@@ -43,6 +43,13 @@ impl ZPoly {
     /// degree). With `d = lcm(den a, den b)`, `a = α/d`, `b = β/d`:
     /// `d^n p((α + βu)/d) = Σ_i [shift_α (Σ_j c_j d^(n−j) t^j)]_i β^i u^i`.
     pub fn compose_affine(&self, a: &Rat, b: &Rat) -> ZPoly {
+        let p = self.compose_affine_multiple(a, b);
+        p.div_exact_int(&p.content())
+    }
+    /// `d^n·p(a + b·u)` (`d = lcm(den a, den b) > 0`, `n = deg p`): the
+    /// positive integer multiple of [`ZPoly::compose_affine`] before its
+    /// content is removed, for callers that need only signs.
+    pub fn compose_affine_multiple(&self, a: &Rat, b: &Rat) -> ZPoly {
         let Some(n) = self.degree() else {
             return ZPoly::zero();
         };
@@ -66,8 +73,7 @@ impl ZPoly {
                 *x *= &bp;
             }
         }
-        let p = ZPoly::new(v);
-        p.div_exact_int(&p.content())
+        ZPoly::new(v)
     }
     /// `t^n p(1/t)` with `n = deg p`: the coefficients reversed (the degree
     /// drops by the multiplicity of the root `0`).
