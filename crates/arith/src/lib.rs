@@ -23,6 +23,7 @@ mod backend_gmp;
 mod backend_num;
 mod backend_refops;
 mod convert;
+mod descartes;
 mod dual;
 mod dwball;
 mod int;
@@ -34,6 +35,7 @@ mod small;
 
 pub use approx::Approx;
 pub use convert::NotFinite;
+pub use descartes::sign_variations;
 pub use dual::Dual;
 pub use dwball::DwBall;
 pub use int::Int;
@@ -42,7 +44,7 @@ pub use jet2::Jet2;
 pub use rat::text::{excerpt, ParseRatError};
 pub use rat::Rat;
 pub use ring::{Ring, RingOps};
-pub use small::SmallInt;
+pub use small::{gcd_u128, SmallInt};
 
 // The big-integer kernel of this build, whose functions `Int` wraps.
 #[cfg(any(feature = "gmp", all(feature = "dashu", not(feature = "num-kernel"))))]

@@ -66,20 +66,8 @@ impl SmallInt {
         let (Some(a), Some(b)) = (self.exact(), o.exact()) else {
             return SmallInt(OVERFLOW);
         };
-        // |a|, |b| < 2^127: so is their gcd. Machine words once both fit
-        // (an i128 remainder is a library call).
-        let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
-        while b != 0 {
-            if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
-                let (mut x, mut y) = (x, y);
-                while y != 0 {
-                    (x, y) = (y, x % y);
-                }
-                return SmallInt(i128::from(x));
-            }
-            (a, b) = (b, a % b);
-        }
-        SmallInt(a as i128)
+        // |a|, |b| < 2^127: so is their gcd.
+        SmallInt(gcd_u128(a.unsigned_abs(), b.unsigned_abs()) as i128)
     }
 
     /// `op` on both values, overflowed when either is or `op` says `None`.
@@ -155,6 +143,45 @@ impl Ring for SmallInt {
             (Ok(x), Ok(y)) if y != 0 && y != -1 => (x % y == 0).then(|| i128::from(x / y)),
             _ => (a.checked_rem(b)? == 0).then(|| a.checked_div(b))?,
         })
+    }
+}
+
+/// Binary gcd (`gcd(0, 0) = 0`). When one operand is much shorter than
+/// the other (a running content against a long coefficient), Euclid's
+/// first step `gcd(a, b) = gcd(a, b mod a)` comes first: one division
+/// instead of a chain of subtractions as long as `b`.
+///
+/// Operands that both fit a machine word take Euclid's algorithm in
+/// `u64` (an `u128` remainder is a library call, and the binary loop
+/// costs more on short numbers).
+pub fn gcd_u128(a: u128, b: u128) -> u128 {
+    if let (Ok(mut x), Ok(mut y)) = (u64::try_from(a), u64::try_from(b)) {
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        return u128::from(x);
+    }
+    let (mut a, mut b) = if a <= b { (a, b) } else { (b, a) };
+    if a == 0 {
+        return b;
+    }
+    if a.leading_zeros() > b.leading_zeros() + 8 {
+        b %= a;
+        if b == 0 {
+            return a;
+        }
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
     }
 }
 

@@ -111,18 +111,7 @@ impl SignData {
 /// assert_eq!(sign_variations(&[0, 0, 0]), 0);
 /// ```
 pub fn sign_variations(signs: &[i32]) -> usize {
-    let mut nonzero = signs.iter().filter(|s| **s != 0).map(|s| s.signum());
-    let Some(mut last) = nonzero.next() else {
-        return 0;
-    };
-    let mut count = 0;
-    for s in nonzero {
-        if s != last {
-            count += 1;
-            last = s;
-        }
-    }
-    count
+    ccd_arith::sign_variations(signs.iter().copied())
 }
 
 /// Theorem 3.10 / Table 2: the configuration from the sign data.

@@ -60,6 +60,9 @@ pub(crate) struct Coefficients {
     /// `f_k · 2^(−shift)` in double-word balls (low → high), formed on
     /// first need.
     balls: OnceLock<[Vec<DwBall>; 5]>,
+    /// The `f_k` modulo the word prime of [`Residues`], formed on first
+    /// need (every quantity's image is a closed form of these).
+    images: OnceLock<[Residues; 5]>,
     /// The last point's jets: the quantities at one root are asked for at
     /// the same point.
     last: RefCell<Option<(Rat, [Dual<Int>; 5])>>,
@@ -90,6 +93,7 @@ impl Coefficients {
             polys: Default::default(),
             extremes: Default::default(),
             balls: OnceLock::new(),
+            images: OnceLock::new(),
             last: RefCell::new(None),
             last_ball: RefCell::new(None),
             last_box: RefCell::new(None),
@@ -406,11 +410,13 @@ impl SignModel for ClosedForm {
     /// too, and `deg q ≤ w·n`.
     fn residues(&self) -> (Residues, bool) {
         if let Some(q) = self.f.polys[slot(self.q)].get() {
-            let r = Residues::of(q);
-            let kept = r.degree() == q.degree();
-            return (r, kept);
+            return Residues::image(q);
         }
-        let r = self.of(&self.f.f.coeffs.each_ref().map(Residues::of));
+        let images = self
+            .f
+            .images
+            .get_or_init(|| self.f.f.coeffs.each_ref().map(Residues::of));
+        let r = self.of(images);
         let kept = r.degree() == Some(homogeneous_degree(self.q) as usize * self.f.f.degree());
         (r, kept)
     }

@@ -23,7 +23,7 @@
 //! integer form of a rotation (`R = M(q)/|q|²`).
 
 use crate::centred::centred_characteristic;
-use crate::curve::Integer;
+use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
 use crate::matrices::{placed_quadric, static_quadric, PlacedQuadric};
@@ -188,9 +188,7 @@ type StaticBody<'a> = (&'a [Rat; 3], &'a Vec3, &'a Quat);
 fn static_characteristic<I: Integer>(a: &StaticBody, b: &StaticBody) -> [I; 5] {
     let quadric = |(radii, center, q): &StaticBody| static_quadric::<I>(radii, center, q);
     let f = characteristic(&quadric(a), &quadric(b));
-    let g = f
-        .iter()
-        .fold(I::zero(), |g, c| if g.is_one() { g } else { g.gcd(c) });
+    let g = content(&f);
     if g.is_zero() || g.is_one() {
         return f;
     }

@@ -42,6 +42,14 @@ impl Integer for SmallInt {
     }
 }
 
+/// The gcd of `values` (`≥ 0`; `0` when all vanish), stopping as soon as
+/// it is `1`.
+pub(crate) fn content<'a, I: Integer + 'a>(values: impl IntoIterator<Item = &'a I>) -> I {
+    values
+        .into_iter()
+        .fold(I::zero(), |g, e| if g.is_one() { g } else { g.gcd(e) })
+}
+
 /// The lcm of the denominators of `values` (`1` for none), skipping the
 /// usual denominators `1` and those equal to the running lcm.
 pub(crate) fn common_denominator<'a, I: Integer>(values: impl IntoIterator<Item = &'a Rat>) -> I {

@@ -3,7 +3,9 @@
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
 use crate::centred::Centred;
-use crate::curve::{common_denominator, times_denominator, to_poly_curve, Integer, PolyCurve};
+use crate::curve::{
+    common_denominator, content, times_denominator, to_poly_curve, Integer, PolyCurve,
+};
 use crate::error::MotionError;
 use crate::kinds::{Bezier, Body, Motion, Quat, Vec3};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
@@ -269,9 +271,8 @@ fn integer_diagonal<I: Integer>(radii: &[Rat; 3]) -> [I; 4] {
         Some(s) if !s.is_one() => e[i].times(s),
         _ => e[i].clone(),
     });
-    let k = scaled
-        .iter()
-        .fold(m.times(&m), |g, x| if g.is_one() { g } else { g.gcd(x) });
+    let mm = m.times(&m);
+    let k = content(std::iter::once(&mm).chain(&scaled));
     if k.is_one() {
         return scaled;
     }
@@ -296,10 +297,7 @@ pub(crate) fn static_quadric<I: Integer>(radii: &[Rat; 3], center: &Vec3, q: &Qu
 /// A constant matrix divided by the gcd of its entries: what
 /// [`primitive_matrix`] does to constant polynomials.
 fn primitive_constant<I: Integer>(n: Mat4<I>) -> Mat4<I> {
-    let g = n
-        .iter()
-        .flatten()
-        .fold(I::zero(), |g, e| if g.is_one() { g } else { g.gcd(e) });
+    let g = content(n.iter().flatten());
     if g.is_zero() || g.is_one() {
         return n;
     }

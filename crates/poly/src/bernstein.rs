@@ -29,7 +29,7 @@ use crate::mul::mul_coeffs;
 use crate::zpoly::eval::hom_horner;
 use crate::zpoly::substitution::taylor_shift_in_place;
 use crate::{QPoly, ZPoly};
-use ccd_arith::{Int, Rat};
+use ccd_arith::{sign_variations, Int, Rat};
 
 /// The Bernstein form of a polynomial of degree `≤ n` on `[lo, hi]`:
 /// `value(t) = scale · Σ_i coeffs[i] · B_i^n((t − lo)/(hi − lo))`.
@@ -128,20 +128,6 @@ fn divide_binomials(c: Vec<Int>) -> (Vec<Int>, Rat) {
         })
         .collect();
     (beta, Rat::new(Int::one(), l).expect("positive lcm"))
-}
-
-/// The sign changes of a sequence of signs, zeros skipped (Descartes'
-/// rule of signs counts these).
-pub fn sign_variations(signs: impl IntoIterator<Item = i32>) -> usize {
-    let mut last = 0;
-    let mut count = 0;
-    for s in signs.into_iter().filter(|&s| s != 0) {
-        if last != 0 && s != last {
-            count += 1;
-        }
-        last = s;
-    }
-    count
 }
 
 /// `β_i · C(n, i)`.

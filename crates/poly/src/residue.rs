@@ -49,6 +49,14 @@ impl Residues {
         Residues::trimmed(p.coeffs().iter().map(|c| f.enter(c.mod_u64(f.p))).collect())
     }
 
+    /// `p` modulo the field's prime, and whether the image keeps `p`'s
+    /// degree (the prime does not divide `lc(p)`).
+    pub fn image(p: &ZPoly) -> (Residues, bool) {
+        let r = Residues::of(p);
+        let kept = r.degree() == p.degree();
+        (r, kept)
+    }
+
     fn trimmed(mut c: Vec<u64>) -> Residues {
         while c.last() == Some(&0) {
             c.pop();

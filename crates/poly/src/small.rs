@@ -154,7 +154,7 @@ impl SmallPoly {
             self.c[..self.len]
                 .iter()
                 .try_fold(g, |g, v| {
-                    let g = crate::zpoly::division::gcd_u128(g, v.unsigned_abs());
+                    let g = ccd_arith::gcd_u128(g, v.unsigned_abs());
                     if g == 1 {
                         Err(g)
                     } else {

@@ -176,10 +176,7 @@ pub trait SignModel {
     /// function of other polynomials may form the image from theirs, so
     /// that a coprimality proof ([`Residues::proves_coprime`]) needs no `q`.
     fn residues(&self) -> (Residues, bool) {
-        let q = self.exact();
-        let r = Residues::of(q);
-        let kept = r.degree() == q.degree();
-        (r, kept)
+        Residues::image(self.exact())
     }
 }
 

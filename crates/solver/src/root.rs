@@ -4,8 +4,8 @@
 //! decide the exact sign of any polynomial at it.
 
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
-use ccd_arith::{DwBall, Int, Interval, Rat, RingOps};
-use ccd_poly::{sign_variations, Bernstein, ZPoly};
+use ccd_arith::{sign_variations, DwBall, Int, Interval, Rat, RingOps};
+use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
 /// The round of [`RealRoot::sign_with`] from which, once `q(α) ≠ 0` is

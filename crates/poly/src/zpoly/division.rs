@@ -2,36 +2,7 @@
 //! by a polynomial, and the content and primitive part.
 
 use super::ZPoly;
-use ccd_arith::Int;
-
-/// Binary gcd (`gcd(0, 0) = 0`). When one operand is much shorter than
-/// the other (a running content against a long coefficient), Euclid's
-/// first step `gcd(a, b) = gcd(a, b mod a)` comes first: one division
-/// instead of a chain of subtractions as long as `b`.
-pub(crate) fn gcd_u128(a: u128, b: u128) -> u128 {
-    let (mut a, mut b) = if a <= b { (a, b) } else { (b, a) };
-    if a == 0 {
-        return b;
-    }
-    if a.leading_zeros() > b.leading_zeros() + 8 {
-        b %= a;
-        if b == 0 {
-            return a;
-        }
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
+use ccd_arith::{gcd_u128, Int};
 
 /// `gcd` of the entries, `≥ 0` (`0` when all vanish), stopping as soon as
 /// the running gcd is `1`.
