@@ -292,6 +292,9 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
     let raw = v["timeline"].as_array().expect("checked above");
     // The gaps (issue 18): pieces of the span the timeline does not cover,
     // each with exact ends and a reason.
+    // A gap's witness, when present, is a proven non-separate exact
+    // instant inside it.
+    let mut witnesses: Vec<Option<Rat>> = Vec::new();
     let gaps: Vec<(Rat, Rat)> = match v["gaps"].as_array() {
         None => vec![],
         Some(gaps) => gaps
@@ -300,7 +303,21 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
                 if g["reason"].as_str().is_none_or(str::is_empty) {
                     return Err(Failure::from("JSON: a gap without a reason"));
                 }
-                Ok((rat(&g["lo"], "gap lo")?, rat(&g["hi"], "gap hi")?))
+                let (lo, hi) = (rat(&g["lo"], "gap lo")?, rat(&g["hi"], "gap hi")?);
+                let w = &g["witness"];
+                let t = if w.is_null() {
+                    None
+                } else {
+                    let t = rat(&w["t"], "gap witness t")?;
+                    if !(lo <= t && t <= hi) || state(&w["state"])? == State::Separate {
+                        return Err(format!(
+                            "JSON: a gap's witness {w} is not a collision in it"
+                        ));
+                    }
+                    Some(t)
+                };
+                witnesses.push(t);
+                Ok((lo, hi))
             })
             .collect::<Result<_, Failure>>()?,
     };
@@ -397,8 +414,35 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
         }
         _ => {}
     }
-    if v["first_contact"].is_null() != (complete && separate) {
-        return Err("first_contact disagrees with collision_free".into());
+    // `first_contact` is the earliest non-separate instant *known*
+    // (scene-format.md): the start of the first non-separate segment, or a
+    // gap's start up to its witness, whichever comes first; `null` when
+    // neither exists (separate throughout, or gaps without witnesses).
+    let known = pieces.iter().find_map(|(_, p)| match p {
+        Piece::Seg(_, s) if s.state != State::Separate => Some(s.start.clone()),
+        Piece::Seg(..) => None,
+        Piece::Gap(g) => {
+            let k = gaps
+                .iter()
+                .position(|x| std::ptr::eq(x, *g))
+                .expect("a gap");
+            witnesses[k].clone().map(|t| Time {
+                lo: g.0.clone(),
+                hi: t,
+            })
+        }
+    });
+    let reported = match &v["first_contact"] {
+        Value::Null => None,
+        t => Some(time(t)?),
+    };
+    if reported != known {
+        return Err(format!(
+            "first_contact {reported:?} is not the earliest non-separate instant known, {known:?}"
+        ));
+    }
+    if reported.is_none() && v["collision_free"] == Value::Bool(false) {
+        return Err("collision_free is false without a first contact".into());
     }
     Ok((span, segs))
 }
@@ -546,7 +590,11 @@ mod tests {
     fn the_contract_checks_can_fail() {
         assert!(timeline(&good()).is_ok());
         type Breaks = fn(&mut Value);
-        let broken: [(&str, Breaks); 6] = [
+        let broken: [(&str, Breaks); 8] = [
+            ("no first contact", |v| v["first_contact"] = Value::Null),
+            ("late first contact", |v| {
+                v["first_contact"] = t("1/2", "2/3")
+            }),
             ("gap", |v| v["timeline"][2]["start"] = t("1/2", "2/3")),
             ("short", |v| v["timeline"][2]["end"] = t("0", "1")),
             ("late start", |v| {
@@ -565,6 +613,34 @@ mod tests {
         let mut v = good();
         v["timeline"][2]["end"] = json!({"lo": "3/4", "hi": "1", "certified": false});
         assert!(timeline(&v).is_ok());
+        // A gap without a witness (the helical path): nothing non-separate
+        // is known, so no first contact, and none may be claimed.
+        let gapped = |witness: Value, first: Value| {
+            json!({
+                "span": ["0", "1"],
+                "collision_free": null,
+                "collision_free_reason": "1 piece(s) of the span undecided (see gaps)",
+                "complete": false,
+                "first_contact": first,
+                "contacts": [],
+                "timeline": [
+                    {"state": "separate", "start": t("0", "0"), "end": t("1/4", "1/4")},
+                    {"state": "separate", "start": t("3/4", "3/4"), "end": t("1", "1")},
+                ],
+                "gaps": [{"lo": "1/4", "hi": "3/4", "reason": "undecided", "witness": witness}],
+            })
+        };
+        assert!(timeline(&gapped(Value::Null, Value::Null)).is_ok());
+        assert!(timeline(&gapped(Value::Null, t("1/4", "3/4"))).is_err());
+        // With a witness, the first contact runs from the gap's start to it.
+        let w = json!({"t": "1/2", "state": "overlap"});
+        assert!(timeline(&gapped(w.clone(), t("1/4", "1/2"))).is_ok());
+        assert!(timeline(&gapped(w.clone(), Value::Null)).is_err());
+        assert!(timeline(&gapped(
+            json!({"t": "7/8", "state": "overlap"}),
+            t("1/4", "7/8")
+        ))
+        .is_err());
     }
 
     #[test]
