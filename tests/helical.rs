@@ -382,10 +382,10 @@ fn assert_honest(s: &Scene, out: &Outcome, first_only: bool) {
     for g in &out.gaps {
         assert!(g.lo < g.hi && !g.reason.is_empty(), "{g:?}");
         if let Some(w) = &g.witness {
-            assert!(
-                g.lo < w.t && w.t < g.hi && w.state != State::Separate,
-                "{g:?}"
-            );
+            // Strictly inside, or the gap's start when that is t0 and the
+            // state there is proven (the state at t0 is the witness).
+            let inside = g.lo < w.t || (w.t == g.lo && g.lo == *t0);
+            assert!(inside && w.t < g.hi && w.state != State::Separate, "{g:?}");
         }
     }
     // 3. The verdict is proven, or undecided with a reason.
@@ -534,6 +534,42 @@ fn frequency_1e10_stops_at_its_budget_honestly() {
         out.collision_free && out.complete && out.certified(),
         "{out:?}"
     );
+}
+
+/// A gap from t0 on after an overlap proven at t0 (found by the fuzzer:
+/// A's first radius 1e1000 swallows B while the 1e10 frequency exhausts the
+/// budget): the full query knows what a first-contact query stopping at t0
+/// proves, a certified first contact at t0 and no collision-freedom.
+#[test]
+fn a_gap_from_t0_keeps_the_state_proven_there() {
+    let s = scene(
+        r#"
+        [a]
+        radii = ["1e1000", 1, "3/2"]
+        motion = { kind = "helical", axis = [0, 0, 1], rate = 1, center = { cos = [3, 0, 0], sin = [0, 3, 0], frequency = 1e10 } }
+        [b]
+        radii = [1, "1/2", "1/3"]
+        "#,
+    );
+    let zero = Rat::from_frac(0, 1);
+    let at_t0 = |c: &Option<ccd_exact::Instant>| {
+        c.as_ref()
+            .is_some_and(|c| c.lo == zero && c.hi == zero && c.certified)
+    };
+    let first = enclosure(
+        &s,
+        &Options {
+            first_contact_only: true,
+            ..Options::default()
+        },
+    );
+    assert_honest(&s, &first, true);
+    assert!(at_t0(&first.first_contact), "{first:?}");
+    let full = enclosure(&s, &Options::default());
+    assert_honest(&s, &full, false);
+    assert!(!full.gaps.is_empty(), "the budget is reached: {full:?}");
+    assert!(at_t0(&full.first_contact), "{full:?}");
+    assert!(!full.collision_free && full.undecided.is_none(), "{full:?}");
 }
 
 #[test]

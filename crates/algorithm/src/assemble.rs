@@ -238,6 +238,20 @@ pub(crate) fn assemble<O: Oracle>(
     for item in o.settle(items) {
         push(&mut merged, item);
     }
+    // A gap from t0 on, where the state at t0 is proven not separate: t0
+    // itself is its witness (a first-contact query stops there with that
+    // state; the full query must not know less).
+    if let (Some(Item::Gap(g)), true) = (
+        merged.first_mut(),
+        state0.certified && state0.state != State::Separate,
+    ) {
+        if g.lo == *d0 && g.witness.is_none() {
+            g.witness = Some(Witness {
+                t: d0.clone(),
+                state: state0.state,
+            });
+        }
+    }
     let geometry: Vec<Geometry> = if opts.contact_geometry {
         roots
             .into_iter()
@@ -345,10 +359,12 @@ fn verdicts<O: Oracle>(o: &O, items: Vec<Item>, stop_early: bool, stopped: bool)
             }
             Item::Gap(g) => {
                 if let (None, Some(w)) = (&first_contact, &g.witness) {
+                    // Proven exactly when nothing undecided precedes it: a
+                    // witness at the gap's start after proven separation.
                     first_contact = Some(Instant {
                         lo: g.lo.clone(),
                         hi: w.t.clone(),
-                        certified: false,
+                        certified: clean && w.t == g.lo,
                     });
                 }
                 clean = false;
