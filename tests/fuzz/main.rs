@@ -21,7 +21,10 @@
 //! * `CCD_FUZZ_SEED` (default 12): the seed; case `i` of seed `s` is the
 //!   same mutant on every machine.
 //! * `CCD_FUZZ_CASES` (default 40, or unbounded when `CCD_FUZZ_SECONDS` is
-//!   set): how many mutants.
+//!   set): how many mutants (the case numbers below it).
+//! * `CCD_FUZZ_FROM` (default 0): the first case; with `CCD_FUZZ_CASES`
+//!   one past the last, `CCD_FUZZ_FROM=3270 CCD_FUZZ_CASES=3271` replays
+//!   case 3270 alone.
 //! * `CCD_FUZZ_SECONDS`: keep making mutants until this many seconds have
 //!   passed (the last one started is finished); also replays the slow
 //!   regressions.
@@ -51,6 +54,7 @@ use std::time::{Duration, Instant};
 /// The run's settings, from the environment.
 struct Config {
     seed: u64,
+    from: u64,
     cases: Option<u64>,
     seconds: Option<f64>,
     bound: Bound,
@@ -72,6 +76,7 @@ fn config() -> Config {
     let cases = env::<u64>("CCD_FUZZ_CASES").or(if seconds.is_some() { None } else { Some(40) });
     Config {
         seed: env("CCD_FUZZ_SEED").unwrap_or(12),
+        from: env("CCD_FUZZ_FROM").unwrap_or(0),
         cases,
         seconds,
         bound: Bound {
@@ -163,7 +168,7 @@ fn mutants_of_the_shipped_scenes() {
     let start = Instant::now();
     let mut tally = Tally::default();
     let mut failures = Vec::new();
-    let mut case = 0u64;
+    let mut case = cfg.from;
     while cfg.cases.is_none_or(|n| case < n)
         && cfg
             .seconds
@@ -191,8 +196,9 @@ fn mutants_of_the_shipped_scenes() {
         case += 1;
     }
     println!(
-        "fuzz: seed {}, {case} mutants in {:.1?}: {} answered ({} instants compared), {} refused, {} failed; slowest {:.2?} ({})",
+        "fuzz: seed {}, {} mutants in {:.1?}: {} answered ({} instants compared), {} refused, {} failed; slowest {:.2?} ({})",
         cfg.seed,
+        case - cfg.from,
         start.elapsed(),
         tally.answered,
         tally.compared,
@@ -204,10 +210,11 @@ fn mutants_of_the_shipped_scenes() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     // Guards against a mutator that only makes refusals: the timeline
     // check must have run.
-    if case >= 20 {
+    let made = case - cfg.from;
+    if made >= 20 {
         assert!(
-            tally.answered * 5 >= case as usize && tally.compared > 0,
-            "only {} of {case} mutants answered, {} instants compared",
+            tally.answered * 5 >= made as usize && tally.compared > 0,
+            "only {} of {made} mutants answered, {} instants compared",
             tally.answered,
             tally.compared
         );
