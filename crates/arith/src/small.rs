@@ -41,6 +41,19 @@ impl SmallInt {
         SmallInt(x.to_i128().unwrap_or(OVERFLOW))
     }
 
+    /// `v` (`−2^127`, the overflow marker, comes in overflowed).
+    #[inline]
+    pub fn from_i128(v: i128) -> SmallInt {
+        SmallInt(v)
+    }
+
+    /// The overflowed value: what an operation whose exact result does
+    /// not fit gives.
+    #[inline]
+    pub fn overflowed() -> SmallInt {
+        SmallInt(OVERFLOW)
+    }
+
     /// The exact value, `None` if an operation overflowed.
     #[inline]
     pub fn to_int(&self) -> Option<Int> {

@@ -27,34 +27,150 @@
 //! The factor `δ²` is a positive constant, which the normalisation's content
 //! removal takes out: the normalised `f` is the very polynomial of the
 //! general route (checked against it by a property test below).
+//!
+//! # Machine words
+//!
+//! The routine is written once over [`CentredInteger`] and runs over
+//! `i128` ([`SmallInt`], [`SmallPoly`]) when the numbers are short (one-
+//! or two-digit radii and centres: `f` has at most about 120 bits), over
+//! [`Int`] otherwise: three-decimal radii already give `K` entries of
+//! about 60 bits and an `f` of about 250 bits. The bodies themselves
+//! ([`Centred`]) fit `i128` far more often, and are lifted to [`Int`] from
+//! there ([`Centred::lifted`]).
 
-use ccd_arith::Int;
-use ccd_poly::ZPoly;
+use crate::curve::Integer;
+use ccd_arith::{Int, RingOps, SmallInt};
+use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{adj3, det3, Mat3};
 
-/// A body that does not turn, as the frame of its own centre sees it.
-#[derive(Clone, Debug)]
-pub(crate) struct Centred {
-    /// `K = XᵀD₃X`, divided by [`Centred::scale`]: the integer quadric's
-    /// constant 3×3 block.
-    pub(crate) k: Mat3<Int>,
-    /// `κ = −d₄·z² > 0`, divided by [`Centred::scale`]: minus the integer
-    /// quadric's corner at its centre.
-    pub(crate) kappa: Int,
-    /// The common content `s > 0` of `K` and `κ` taken out of them: the
-    /// quadric at the centre is `s·[[k, 0], [0, −kappa]]`.
-    pub(crate) scale: Int,
-    /// The centre curve `c(u)` times [`Centred::denominator`].
-    pub(crate) centre: [ZPoly; 3],
-    /// The centre curve's denominator (a nonzero integer).
-    pub(crate) denominator: Int,
+/// The exact integers the set-up runs over, with their polynomials in `u`:
+/// [`Int`] with [`ZPoly`], and [`SmallInt`] with [`SmallPoly`] (`i128`
+/// numbers that mark an overflow, which every later operation keeps). The
+/// routine [`centred_characteristic`] is written once over this trait; a
+/// caller runs it over `SmallInt` first and over `Int` when a result is
+/// overflowed (the same polynomials when none is: every operation is
+/// exact or overflows).
+pub(crate) trait CentredInteger: Integer {
+    /// Polynomials in `u` with coefficients of this type.
+    type Poly: RingOps;
+    /// `|self|`.
+    fn abs(&self) -> Self;
+    /// The image of a [`ZPoly`] (overflowed if it does not fit).
+    fn poly(p: &ZPoly) -> Self::Poly;
+    /// The constant polynomial `x`.
+    fn constant(x: &Self) -> Self::Poly;
+    /// `Σ cᵢ·pᵢ`, accumulated in one coefficient vector.
+    fn combination<'a>(terms: impl IntoIterator<Item = (&'a Self, &'a Self::Poly)>) -> Self::Poly
+    where
+        Self: 'a;
+    /// `gcd(g, content(p))` (`≥ 0`).
+    fn gcd_content(g: &Self, p: &Self::Poly) -> Self;
+    /// `p/k` for a `k` dividing every coefficient.
+    fn div_poly(p: &Self::Poly, k: &Self) -> Self::Poly;
 }
 
-impl Centred {
+impl CentredInteger for Int {
+    type Poly = ZPoly;
+    fn abs(&self) -> Int {
+        Int::abs(self)
+    }
+    fn poly(p: &ZPoly) -> ZPoly {
+        p.clone()
+    }
+    fn constant(x: &Int) -> ZPoly {
+        ZPoly::constant(x.clone())
+    }
+    fn combination<'a>(terms: impl IntoIterator<Item = (&'a Int, &'a ZPoly)>) -> ZPoly {
+        let mut acc: Vec<Int> = Vec::new();
+        for (c, p) in terms {
+            if c.is_zero() {
+                continue;
+            }
+            if acc.len() < p.coeffs().len() {
+                acc.resize(p.coeffs().len(), Int::zero());
+            }
+            for (a, x) in acc.iter_mut().zip(p.coeffs()) {
+                a.add_mul(c, x);
+            }
+        }
+        ZPoly::new(acc)
+    }
+    fn gcd_content(g: &Int, p: &ZPoly) -> Int {
+        g.gcd(&p.content())
+    }
+    fn div_poly(p: &ZPoly, k: &Int) -> ZPoly {
+        p.div_exact_int(k)
+    }
+}
+
+impl CentredInteger for SmallInt {
+    type Poly = SmallPoly;
+    fn abs(&self) -> SmallInt {
+        match self.to_i128() {
+            Some(v) if v < 0 => self.negated(),
+            _ => *self,
+        }
+    }
+    fn poly(p: &ZPoly) -> SmallPoly {
+        SmallPoly::lowered(p)
+    }
+    fn constant(x: &SmallInt) -> SmallPoly {
+        SmallPoly::constant(x)
+    }
+    fn combination<'a>(
+        terms: impl IntoIterator<Item = (&'a SmallInt, &'a SmallPoly)>,
+    ) -> SmallPoly {
+        let mut acc = SmallPoly::zero();
+        for (c, p) in terms {
+            if !c.is_zero() {
+                acc.add_product(&SmallPoly::constant(c), p, false);
+            }
+        }
+        acc
+    }
+    fn gcd_content(g: &SmallInt, p: &SmallPoly) -> SmallInt {
+        // A gcd of values in i128 other than −2^127 fits i128.
+        match (g.to_i128(), p.gcd_with(0)) {
+            // (2^127, the gcd of −2^127 alone, is the overflow marker.)
+            (Some(g), Some(c)) => {
+                SmallInt::from_i128(ccd_arith::gcd_u128(g.unsigned_abs(), c) as i128)
+            }
+            _ => SmallInt::overflowed(),
+        }
+    }
+    fn div_poly(p: &SmallPoly, k: &SmallInt) -> SmallPoly {
+        match k.to_i128() {
+            Some(k) => p.div_exact_int(k),
+            // Overflowed, as `k` is.
+            None => SmallPoly::constant(k),
+        }
+    }
+}
+
+/// A body that does not turn, as the frame of its own centre sees it, over
+/// the integers `I` ([`CentredInteger`]).
+#[derive(Clone, Debug)]
+pub(crate) struct Centred<I: CentredInteger> {
+    /// `K = XᵀD₃X`, divided by [`Centred::scale`]: the integer quadric's
+    /// constant 3×3 block.
+    pub(crate) k: Mat3<I>,
+    /// `κ = −d₄·z² > 0`, divided by [`Centred::scale`]: minus the integer
+    /// quadric's corner at its centre.
+    pub(crate) kappa: I,
+    /// The common content `s > 0` of `K` and `κ` taken out of them: the
+    /// quadric at the centre is `s·[[k, 0], [0, −kappa]]`.
+    pub(crate) scale: I,
+    /// The centre curve `c(u)` times [`Centred::denominator`].
+    pub(crate) centre: [I::Poly; 3],
+    /// The centre curve's denominator (a nonzero integer).
+    pub(crate) denominator: I,
+}
+
+impl<I: CentredInteger> Centred<I> {
     /// The body with block `k` (symmetric), corner `−kappa` (`kappa > 0`),
     /// centre curve `centre/denominator`; `k` and `kappa` are stored
     /// divided by their common content ([`Centred::scale`]).
-    pub(crate) fn new(k: Mat3<Int>, kappa: Int, centre: [ZPoly; 3], denominator: Int) -> Centred {
+    pub(crate) fn new(k: Mat3<I>, kappa: I, centre: [I::Poly; 3], denominator: I) -> Centred<I> {
         let mut scale = kappa.abs();
         for (i, row) in k.iter().enumerate() {
             for x in &row[i..] {
@@ -82,47 +198,75 @@ impl Centred {
     }
 }
 
+impl Centred<SmallInt> {
+    /// The same body over [`Int`], `None` if a number overflowed.
+    pub(crate) fn lifted(&self) -> Option<Centred<Int>> {
+        let int = |x: &SmallInt| x.to_int();
+        let k: Vec<Int> = self.k.iter().flatten().map(int).collect::<Option<_>>()?;
+        let centre: Vec<ZPoly> = self
+            .centre
+            .iter()
+            .map(SmallPoly::to_zpoly)
+            .collect::<Option<_>>()?;
+        Some(Centred {
+            k: std::array::from_fn(|i| std::array::from_fn(|j| k[3 * i + j].clone())),
+            kappa: int(&self.kappa)?,
+            scale: int(&self.scale)?,
+            centre: centre.try_into().ok()?,
+            denominator: int(&self.denominator)?,
+        })
+    }
+
+    /// Whether [`centred_characteristic`] of `a` and `b` is likely to fit
+    /// `i128` (a size estimate only, from the bit lengths `k` of the
+    /// blocks and corners, `e` of the centre difference and `s` of the
+    /// scales: `f` has about `4k + 2e + 4s` bits; an overflow is detected
+    /// anyway, this skips a doomed attempt).
+    pub(crate) fn worth_small(a: &Centred<SmallInt>, b: &Centred<SmallInt>) -> bool {
+        let bits = |x: &SmallInt| {
+            x.to_i128()
+                .map_or(128, |v| 128 - v.unsigned_abs().leading_zeros())
+        };
+        let block = |c: &Centred<SmallInt>| c.k.iter().flatten().chain([&c.kappa]).map(bits).max();
+        let centre = |c: &Centred<SmallInt>| {
+            let poly = c
+                .centre
+                .iter()
+                .map(|p| p.max_bits() as u32)
+                .max()
+                .unwrap_or(0);
+            poly + bits(&c.denominator)
+        };
+        let k = block(a).max(block(b)).unwrap_or(0);
+        let e = centre(a).max(centre(b)) + 1;
+        let s = bits(&a.scale).max(bits(&b.scale));
+        4 * k + 2 * e + 4 * s + 12 <= 126
+    }
+}
+
 /// `Σ_ij m_ij·x_ij`: the trace of `m·x` for a symmetric `x`.
-fn trace_product(m: &Mat3<Int>, x: &Mat3<Int>) -> Int {
-    let mut s = Int::zero();
+fn trace_product<I: CentredInteger>(m: &Mat3<I>, x: &Mat3<I>) -> I {
+    let mut s = I::zero();
     for (mr, xr) in m.iter().zip(x) {
         for (a, b) in mr.iter().zip(xr) {
-            s.add_mul(a, b);
+            s.add_product(a, b, false);
         }
     }
     s
 }
 
-/// `Σ cᵢ·pᵢ` for integers `cᵢ` and polynomials `pᵢ`, accumulated in one
-/// coefficient vector (no intermediate polynomials).
-fn combination<'a>(terms: impl IntoIterator<Item = (&'a Int, &'a ZPoly)>) -> ZPoly {
-    let mut acc: Vec<Int> = Vec::new();
-    for (c, p) in terms {
-        if c.is_zero() {
-            continue;
-        }
-        if acc.len() < p.coeffs().len() {
-            acc.resize(p.coeffs().len(), Int::zero());
-        }
-        for (a, x) in acc.iter_mut().zip(p.coeffs()) {
-            a.add_mul(c, x);
-        }
-    }
-    ZPoly::new(acc)
-}
-
 /// `vᵀ·m·v` for a symmetric constant `m`, from the products `vv[i][j] = v_i·v_j` (`i ≤ j`).
-fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
-    let doubled: Mat3<Int> = std::array::from_fn(|i| {
+fn quadratic_form<I: CentredInteger>(m: &Mat3<I>, vv: &[[I::Poly; 3]; 3]) -> I::Poly {
+    let doubled: Mat3<I> = std::array::from_fn(|i| {
         std::array::from_fn(|j| {
             if i < j {
-                m[i][j].mul_i64(2)
+                m[i][j].plus(&m[i][j])
             } else {
-                Int::zero()
+                I::zero()
             }
         })
     });
-    combination((0..3).flat_map(|i| {
+    I::combination((0..3).flat_map(|i| {
         let (m, doubled) = (&m, &doubled);
         (i..3).map(move |j| {
             let c = if i == j { &m[i][i] } else { &doubled[i][j] };
@@ -132,7 +276,9 @@ fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
 }
 
 /// `det(λA + B)` (high → low in λ) times a positive constant, for two
-/// bodies that do not turn (module docs).
+/// bodies that do not turn (module docs), over the integers `I`: over
+/// [`SmallInt`] the result is exact unless a coefficient is overflowed,
+/// and then the very polynomials of the route over [`Int`].
 ///
 /// The outer coefficients are constants: with `b = K_B·e`,
 /// `bᵀ·adj K_B·b = det K_B·eᵀK_B·e` (`K·adj K·K = det K·K`), so
@@ -147,47 +293,52 @@ fn quadratic_form(m: &Mat3<Int>, vv: &[[ZPoly; 3]; 3]) -> ZPoly {
 /// coefficients `c_k/(s_A^k·s_B^(4−k))`, so each is multiplied back by
 /// `p^k·q^(4−k)` with `p/q = s_A/s_B` in lowest terms (a positive
 /// constant times `c_k`).
-pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
+pub(crate) fn centred_characteristic<I: CentredInteger>(
+    a: &Centred<I>,
+    b: &Centred<I>,
+) -> [I::Poly; 5] {
     // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B,
     // both divided by their common content (only δ² enters).
-    let minus_wb = -&b.denominator;
-    let e: [ZPoly; 3] = std::array::from_fn(|i| {
-        combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
+    let minus_wb = b.denominator.negated();
+    let e: [I::Poly; 3] = std::array::from_fn(|i| {
+        I::combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
     });
-    let delta = &a.denominator * &b.denominator;
+    let delta = a.denominator.times(&b.denominator);
     let h = e.iter().fold(delta.abs(), |g, p| {
         if g.is_one() {
             g
         } else {
-            g.gcd(&p.content())
+            I::gcd_content(&g, p)
         }
     });
     let (e, delta) = if h.is_one() {
         (e, delta)
     } else {
-        (e.map(|p| p.div_exact_int(&h)), delta.div_exact(&h))
+        (e.map(|p| I::div_poly(&p, &h)), delta.div_exact(&h))
     };
     // b = K_B·e and the products b_i·b_j.
-    let kb_e: [ZPoly; 3] =
-        std::array::from_fn(|i| combination((0..3).map(|j| (&b.k[i][j], &e[j]))));
-    let bb: [[ZPoly; 3]; 3] = std::array::from_fn(|i| {
+    let kb_e: [I::Poly; 3] =
+        std::array::from_fn(|i| I::combination((0..3).map(|j| (&b.k[i][j], &e[j]))));
+    let bb: [[I::Poly; 3]; 3] = std::array::from_fn(|i| {
         std::array::from_fn(|j| {
             if i <= j {
-                &kb_e[i] * &kb_e[j]
+                kb_e[i].times(&kb_e[j])
             } else {
-                ZPoly::zero()
+                I::Poly::zero()
             }
         })
     });
-    let delta2 = &delta * &delta;
+    let delta2 = delta.times(&delta);
     // s₀(u) = eᵀK_B·e − δ²κ_B.
-    let s0 = &(0..3).fold(ZPoly::zero(), |s, i| &s + &(&e[i] * &kb_e[i]))
-        - &ZPoly::constant(&delta2 * &b.kappa);
+    let mut s0 = I::constant(&delta2.times(&b.kappa).negated());
+    for (ei, bi) in e.iter().zip(&kb_e) {
+        s0.add_product(ei, bi, false);
+    }
     let (adj_a, adj_b) = (adj3(&a.k), adj3(&b.k));
-    let sum: Mat3<Int> = std::array::from_fn(|i| std::array::from_fn(|j| &a.k[i][j] + &b.k[i][j]));
+    let sum: Mat3<I> = std::array::from_fn(|i| std::array::from_fn(|j| a.k[i][j].plus(&b.k[i][j])));
     let adj_sum = adj3(&sum);
-    let mixed: Mat3<Int> = std::array::from_fn(|i| {
-        std::array::from_fn(|j| &(&adj_sum[i][j] - &adj_a[i][j]) - &adj_b[i][j])
+    let mixed: Mat3<I> = std::array::from_fn(|i| {
+        std::array::from_fn(|j| adj_sum[i][j].minus(&adj_a[i][j]).minus(&adj_b[i][j]))
     });
     // det P, low → high in λ.
     let p = [
@@ -197,23 +348,23 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
         det3(&a.k),
     ];
     // bᵀ·adj P·b, low → high in λ (the constant term is not needed: c_0).
-    let q = [&mixed, &adj_a].map(|m| quadratic_form(m, &bb));
-    let da = &delta2 * &a.kappa;
-    let minus_one = Int::from(-1);
+    let q = [&mixed, &adj_a].map(|m| quadratic_form::<I>(m, &bb));
+    let da = delta2.times(&a.kappa);
+    let minus_one = I::from_i64(-1);
     // c_k = p_k·s₀ − δ²κ_A·p_(k−1) − q_k for k = 1, 2, 3.
-    let c = |k: usize| -> ZPoly {
+    let c = |k: usize| -> I::Poly {
         let ck = match q.get(k - 1) {
-            Some(qk) => combination([(&p[k], &s0), (&minus_one, qk)]),
-            None => s0.mul_int(&p[k]),
+            Some(qk) => I::combination([(&p[k], &s0), (&minus_one, qk)]),
+            None => I::combination([(&p[k], &s0)]),
         };
-        &ck - &ZPoly::constant(&da * &p[k - 1])
+        ck.minus(&I::constant(&da.times(&p[k - 1])))
     };
     let f = [
-        ZPoly::constant(-&(&da * &p[3])),
+        I::constant(&da.times(&p[3]).negated()),
         c(3),
         c(2),
         c(1),
-        ZPoly::constant(-&(&(&delta2 * &b.kappa) * &p[0])),
+        I::constant(&delta2.times(&b.kappa).times(&p[0]).negated()),
     ];
     rescale_lambda(f, &a.scale, &b.scale)
 }
@@ -221,16 +372,16 @@ pub(crate) fn centred_characteristic(a: &Centred, b: &Centred) -> [ZPoly; 5] {
 /// `c_k·p^k·q^(4−k)` for `[c_4, …, c_0]` (high → low in λ), with
 /// `p/q = s_A/s_B` in lowest terms: `det(λA + B)` up to a positive
 /// constant from `det(λA/s_A + B/s_B)` ([`centred_characteristic`]).
-fn rescale_lambda(f: [ZPoly; 5], s_a: &Int, s_b: &Int) -> [ZPoly; 5] {
+fn rescale_lambda<I: CentredInteger>(f: [I::Poly; 5], s_a: &I, s_b: &I) -> [I::Poly; 5] {
     if s_a == s_b {
         return f;
     }
     let g = s_a.gcd(s_b);
     let (p, q) = (s_a.div_exact(&g), s_b.div_exact(&g));
-    let powers = |x: &Int| -> [Int; 5] {
-        let mut out: [Int; 5] = std::array::from_fn(|_| Int::one());
+    let powers = |x: &I| -> [I; 5] {
+        let mut out: [I; 5] = std::array::from_fn(|_| I::one());
         for k in 1..5 {
-            out[k] = &out[k - 1] * x;
+            out[k] = out[k - 1].times(x);
         }
         out
     };
@@ -238,9 +389,9 @@ fn rescale_lambda(f: [ZPoly; 5], s_a: &Int, s_b: &Int) -> [ZPoly; 5] {
     let mut f = f;
     for (i, c) in f.iter_mut().enumerate() {
         // c = c_k with k = 4 − i.
-        let factor = &pp[4 - i] * &qp[i];
+        let factor = pp[4 - i].times(&qp[i]);
         if !factor.is_one() {
-            *c = c.mul_int(&factor);
+            *c = I::combination([(&factor, &*c)]);
         }
     }
     f
@@ -248,6 +399,7 @@ fn rescale_lambda(f: [ZPoly; 5], s_a: &Int, s_b: &Int) -> [ZPoly; 5] {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
     use crate::kinds::{Bezier, Body, Motion};
     use crate::matrices::placed_quadric;
     use crate::{normalise, CharPoly};
@@ -296,8 +448,160 @@ mod tests {
             let (a, b) = (body(0, degrees.0), body(1, degrees.1));
             let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
             let general = CharPoly { coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())) };
-            proptest::prop_assert!(pa.centred().is_some() && pb.centred().is_some());
+            proptest::prop_assert!(pa.centred::<ccd_arith::Int>().is_some() && pb.centred::<ccd_arith::Int>().is_some());
             proptest::prop_assert_eq!(CharPoly::from_placed(&pa, &pb), general);
+        }
+    }
+
+    /// A body of the brief's kinds with radii `n/10^d`, quaternion
+    /// components over `7^k`, centre control points `n/10^d` (degree `deg`).
+    fn decimal_body(
+        radii: &[(i64, u32)],
+        quat: &[i64],
+        quat_den: u32,
+        points: &[(i64, u32)],
+        deg: usize,
+    ) -> Body {
+        let decimal = |(n, d): (i64, u32)| {
+            Rat::new(ccd_arith::Int::from(n), ccd_arith::Int::from(10).pow(d)).expect("nonzero")
+        };
+        let den = ccd_arith::Int::from(7).pow(quat_den);
+        let mut q: [Rat; 4] = std::array::from_fn(|i| {
+            Rat::new(ccd_arith::Int::from(quat[i]), den.clone()).expect("nonzero")
+        });
+        if q.iter().all(Rat::is_zero) {
+            q[0] = Rat::one();
+        }
+        let pts: Vec<[Rat; 3]> = (0..=deg)
+            .map(|p| std::array::from_fn(|i| decimal(points[3 * p + i])))
+            .collect();
+        let motion = if deg == 0 {
+            Motion::Static {
+                center: pts[0].clone(),
+                orientation: q,
+            }
+        } else {
+            Motion::Translation {
+                center: Bezier {
+                    points: pts,
+                    weights: None,
+                },
+                orientation: q,
+            }
+        };
+        Body {
+            radii: std::array::from_fn(|i| decimal(radii[i])),
+            motion,
+        }
+    }
+
+    /// `f` over `i128`, `None` when a number overflowed there.
+    fn small_f(a: &Body, b: &Body) -> Option<Vec<ZPoly>> {
+        let span = [Rat::zero(), Rat::one()];
+        let (pa, pb) = (
+            placed_quadric(a, &span).unwrap(),
+            placed_quadric(b, &span).unwrap(),
+        );
+        let f = centred_characteristic::<SmallInt>(&pa.centred()?, &pb.centred()?);
+        f.iter().map(SmallPoly::to_zpoly).collect()
+    }
+
+    /// `f` over [`Int`].
+    fn int_f(a: &Body, b: &Body) -> Vec<ZPoly> {
+        let span = [Rat::zero(), Rat::one()];
+        let (pa, pb) = (
+            placed_quadric(a, &span).unwrap(),
+            placed_quadric(b, &span).unwrap(),
+        );
+        let (ca, cb) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
+        centred_characteristic(&ca, &cb).to_vec()
+    }
+
+    #[test]
+    fn short_numbers_fit_and_long_ones_do_not() {
+        let short = decimal_body(
+            &[(1, 0), (2, 0), (3, 0)],
+            &[1, 2, 0, 1],
+            0,
+            &[(1, 0), (-2, 0), (3, 0), (4, 0), (5, 0), (-6, 0)],
+            1,
+        );
+        let other = decimal_body(
+            &[(3, 1), (1, 0), (1, 0)],
+            &[0, 0, 1, 1],
+            1,
+            &[(5, 1), (0, 0), (1, 0)],
+            0,
+        );
+        assert_eq!(small_f(&short, &other), Some(int_f(&short, &other)));
+        // Three-decimal radii (the straight-line benchmark scenes): f has
+        // about 250 bits.
+        let long = decimal_body(
+            &[(847, 3), (2546, 3), (325, 3)],
+            &[4, 3, 1, -1],
+            0,
+            &[
+                (1067, 3),
+                (-11, 3),
+                (-263, 3),
+                (1722, 3),
+                (-1877, 3),
+                (-1103, 3),
+            ],
+            1,
+        );
+        assert_eq!(small_f(&long, &other), None);
+        let (pa, pb) = [&long, &other]
+            .map(|b| placed_quadric(b, &[Rat::zero(), Rat::one()]).unwrap())
+            .into();
+        let (sa, sb) = (
+            pa.centred::<SmallInt>().unwrap(),
+            pb.centred::<SmallInt>().unwrap(),
+        );
+        assert!(!Centred::worth_small(&sa, &sb));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+        /// The route over `i128` ([`SmallInt`]) gives the very `f` of the
+        /// route over [`Int`] whenever no number overflowed on the way, and
+        /// its bodies ([`Centred::lifted`]) are the `Int` ones: on numbers
+        /// from one digit to far beyond `i128` (radii and centres with up
+        /// to 9 decimals, quaternions over `7^k` up to about `2^70`), so
+        /// both sides of the overflow boundary are reached.
+        #[test]
+        fn small_route_is_the_int_route(
+            size in 0u32..8,
+            radii in proptest::collection::vec((1i64..100_000_000, 0u32..8), 6),
+            quats in proptest::collection::vec(-30i64..31, 8),
+            quat_den in proptest::collection::vec(0u32..25, 2),
+            points in proptest::collection::vec((-1_000_000_000i64..1_000_000_000, 0u32..8), 24),
+            degrees in (0usize..4, 0usize..4),
+        ) {
+            // Numbers of about `size` digits (and quaternion denominators
+            // up to 7^(3·size)): short ones fit i128, long ones do not.
+            let ten = 10i64.pow(size);
+            let radii: Vec<(i64, u32)> = radii.iter().map(|&(n, d)| (n % ten + 1, d % (size + 1))).collect();
+            let points: Vec<(i64, u32)> = points.iter().map(|&(n, d)| (n % (10 * ten), d % (size + 1))).collect();
+            let quat_den = quat_den.iter().map(|k| k % (3 * size + 1)).collect::<Vec<_>>();
+            let a = decimal_body(&radii[..3], &quats[..4], quat_den[0], &points[..12], degrees.0);
+            let b = decimal_body(&radii[3..], &quats[4..], quat_den[1], &points[12..], degrees.1);
+            let exact = int_f(&a, &b);
+            if let Some(small) = small_f(&a, &b) {
+                proptest::prop_assert_eq!(small, exact);
+            }
+            let span = [Rat::zero(), Rat::one()];
+            for body in [&a, &b] {
+                let p = placed_quadric(body, &span).unwrap();
+                let (small, int) = (p.centred::<SmallInt>().unwrap(), p.centred::<Int>().unwrap());
+                if let Some(lifted) = small.lifted() {
+                    proptest::prop_assert_eq!(&lifted.k, &int.k);
+                    proptest::prop_assert_eq!(
+                        (&lifted.kappa, &lifted.scale, &lifted.centre, &lifted.denominator),
+                        (&int.kappa, &int.scale, &int.centre, &int.denominator)
+                    );
+                }
+            }
         }
     }
 }

@@ -22,7 +22,7 @@
 //! functions, and it also finds the λ-rescaling hidden in the homogeneous
 //! integer form of a rotation (`R = M(q)/|q|²`).
 
-use crate::centred::centred_characteristic;
+use crate::centred::{centred_characteristic, Centred};
 use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
@@ -62,13 +62,17 @@ impl CharPoly {
             .chain(&b.det_factors)
             .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
             .collect();
-        // Bodies that never turn: in the frame of A's centre (crate::centred).
+        // Bodies that never turn: in the frame of A's centre (crate::centred),
+        // in i128 first, over Int if a number does not fit.
         let centred = (!(a.turns() || b.turns()))
-            .then(|| a.centred().zip(b.centred()))
+            .then(|| centred_quartic(a, b))
             .flatten();
-        if let Some((ca, cb)) = centred {
+        if let Some(f) = centred {
             return CharPoly {
-                coeffs: normalise_with(centred_characteristic(&ca, &cb), candidates),
+                coeffs: match f {
+                    Quartic::Small(f) => normalise_small(&f, candidates),
+                    Quartic::Exact(f) => normalise_with(f, candidates),
+                },
             };
         }
         // Before normalisation, coefficient k of f has degree at most
@@ -222,6 +226,26 @@ fn worth_small(entries: impl Iterator<Item = (usize, u64)> + Clone, factors: usi
 /// `f` unless a [`SmallPoly`] step overflowed.
 fn exact(f: [SmallPoly; 5]) -> Option<[SmallPoly; 5]> {
     f.iter().all(SmallPoly::is_exact).then_some(f)
+}
+
+/// `f` of two bodies that never turn ([`centred_characteristic`]), over
+/// [`SmallInt`] when no number overflows there, else over [`Int`] (the
+/// same polynomials); `None` if a body turns or has a rational centre
+/// curve.
+fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
+    // The bodies themselves are short numbers even when f is not.
+    let (sa, sb) = (a.centred::<SmallInt>()?, b.centred::<SmallInt>()?);
+    if Centred::worth_small(&sa, &sb) {
+        let f = centred_characteristic(&sa, &sb);
+        if f.iter().all(SmallPoly::is_exact) {
+            return Some(Quartic::Small(f));
+        }
+    }
+    let (ia, ib) = match (sa.lifted(), sb.lifted()) {
+        (Some(ia), Some(ib)) => (ia, ib),
+        _ => (a.centred::<Int>()?, b.centred::<Int>()?),
+    };
+    Some(Quartic::Exact(centred_characteristic(&ia, &ib)))
 }
 
 /// `f = det(λA + B)` from one of the two routes of

@@ -2,7 +2,7 @@
 //! `A(u) ∝ N(u)ᵀ·D·N(u)` (`N ∝ M⁻¹`) with integer polynomial entries in
 //! `u ∈ [0, 1]`, built from a motion and validated exactly.
 
-use crate::centred::Centred;
+use crate::centred::{Centred, CentredInteger};
 use crate::curve::{
     common_denominator, content, times_denominator, to_poly_curve, Integer, PolyCurve,
 };
@@ -408,8 +408,10 @@ impl PlacedQuadric {
     /// A body that never turns (static, or translating along a polynomial
     /// curve), seen from its own centre ([`crate::centred`]): the constant
     /// block `K` and corner `κ` of [`PlacedQuadric::quadric`] there, and the
-    /// centre curve. `None` for a body that turns or a rational centre curve.
-    pub(crate) fn centred(&self) -> Option<Centred> {
+    /// centre curve, over the integers `I` (over [`SmallInt`], numbers that
+    /// do not fit come out overflowed). `None` for a body that turns or a
+    /// rational centre curve.
+    pub(crate) fn centred<I: CentredInteger>(&self) -> Option<Centred<I>> {
         let Frame::Rigid { m, n, center, w } = &self.frame else {
             return None;
         };
@@ -421,28 +423,31 @@ impl PlacedQuadric {
         // made primitive (primitive_matrix) by the gcd g of its coefficients:
         // N is rigid_inverse at a zero centre (the blocks X, z) plus the
         // centre column.
+        let value = |p: &ZPoly| I::of(&p.coeff(0));
         let (m, n, w) = (
-            m.each_ref().map(|r| r.each_ref().map(|e| e.coeff(0))),
-            n.coeff(0),
-            w.coeff(0),
+            m.each_ref().map(|r| r.each_ref().map(value)),
+            value(n),
+            value(w),
         );
-        let center: [&[Int]; 3] = center.each_ref().map(ZPoly::coeffs);
-        let blocks = rigid_inverse(&m, &n, &[Int::zero(), Int::zero(), Int::zero()], &w);
+        let coeffs: [Vec<I>; 3] = center
+            .each_ref()
+            .map(|c| c.coeffs().iter().map(I::of).collect());
+        let blocks = rigid_inverse(&m, &n, &[I::zero(), I::zero(), I::zero()], &w);
         // The centre column −mᵀ·C(u), coefficient by coefficient.
-        let len = center.iter().map(|c| c.len()).max().unwrap_or(0);
+        let len = coeffs.iter().map(Vec::len).max().unwrap_or(0);
         let column = (0..3).flat_map(|i| {
-            let (m, center) = (&m, &center);
+            let (m, coeffs) = (&m, &coeffs);
             (0..len).map(move |k| {
-                (0..3).fold(Int::zero(), |mut s, j| {
-                    if let Some(c) = center[j].get(k) {
-                        s.add_mul(&m[j][i], c);
+                (0..3).fold(I::zero(), |mut s, j| {
+                    if let Some(c) = coeffs[j].get(k) {
+                        s.add_product(&m[j][i], c, false);
                     }
                     s
                 })
             })
         });
         // The gcd stops at 1 (the column, lazy, is then not even formed).
-        let mut g = Int::zero();
+        let mut g = I::zero();
         for v in blocks.iter().flatten().cloned().chain(column) {
             if !v.is_zero() {
                 g = g.gcd(&v);
@@ -460,11 +465,11 @@ impl PlacedQuadric {
             blocks.map(|row| row.map(|e| e.div_exact(&g)))
         };
         // At the centre, A = N₀ᵀ·D·N₀ with N₀ = [[X, 0], [0, z]]/g.
-        let centred = congruence(&blocks, &self.diagonal.each_ref().map(|e| e.coeff(0)));
+        let centred = congruence(&blocks, &self.diagonal.each_ref().map(value));
         Some(Centred::new(
             std::array::from_fn(|i| std::array::from_fn(|j| centred[i][j].clone())),
-            -&centred[3][3],
-            center.map(|c| ZPoly::new(c.to_vec())),
+            centred[3][3].negated(),
+            center.each_ref().map(I::poly),
             w,
         ))
     }
