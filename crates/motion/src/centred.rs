@@ -22,11 +22,25 @@
 //!
 //! `δ²·det(λA + B) = det P·(eᵀK_B·e − δ²(κ_B + λκ_A)) − (K_B·e)ᵀ·adj P·(K_B·e)`,
 //!
-//! where `det P = λ³ det K_A + λ² tr(adj K_A·K_B) + λ tr(K_A·adj K_B) + det K_B`
-//! and `adj P = λ² adj K_A + λ·(adj(K_A + K_B) − adj K_A − adj K_B) + adj K_B`.
-//! The factor `δ²` is a positive constant, which the normalisation's content
-//! removal takes out: the normalised `f` is the very polynomial of the
-//! general route (checked against it by a property test below).
+//! where `det P = λ³ det K_A + λ² p₂ + λ p₁ + det K_B` with
+//! `p₂ = tr(adj K_A·K_B)`, `p₁ = tr(K_A·adj K_B)`, and
+//! `adj P = λ² adj K_A + λ·(adj(K_A + K_B) − adj K_A − adj K_B) + adj K_B`.
+//! Translating by `d` once more (`[[I, d], [0, 1]]`, the frame of B's
+//! centre) gives the same determinant as
+//! `det P·(λ·eᵀK_A·e − δ²(κ_B + λκ_A)) − λ²(K_A·e)ᵀ·adj P·(K_A·e)`;
+//! comparing the two in the powers of λ, the part `g(λ)` without `κ` is
+//!
+//! `g(λ) = λ³·det K_A·eᵀK_B·e + λ²·(p₂·eᵀK_B·e − (K_B·e)ᵀ·adj K_A·(K_B·e)) + λ·det K_B·eᵀK_A·e`
+//!
+//! (the `λ`-coefficient read from the second form, the others from the
+//! first; `g(0) = 0` as `bᵀ·adj K·b = det K·eᵀK·e` for `b = K·e`), so
+//!
+//! `δ²·det(λA + B) = g(λ) − δ²(κ_B + λκ_A)·det P`
+//!
+//! needs one quadratic form with an adjugate, not two. The factor `δ²` is
+//! a positive constant, which the normalisation's content removal takes
+//! out: the normalised `f` is the very polynomial of the general route
+//! (checked against it by a property test below).
 //!
 //! # Machine words
 //!
@@ -63,6 +77,12 @@ pub(crate) trait CentredInteger: Integer {
     fn combination<'a>(terms: impl IntoIterator<Item = (&'a Self, &'a Self::Poly)>) -> Self::Poly
     where
         Self: 'a;
+    /// `self += x·y`, in place where the type allows it.
+    fn add_mul(&mut self, x: &Self, y: &Self);
+    /// `Σ xᵢ·yᵢ` for polynomials, accumulated in one coefficient vector.
+    fn dot<'a>(terms: impl IntoIterator<Item = (&'a Self::Poly, &'a Self::Poly)>) -> Self::Poly
+    where
+        Self: 'a;
     /// `gcd(g, content(p))` (`≥ 0`).
     fn gcd_content(g: &Self, p: &Self::Poly) -> Self;
     /// `p/k` for a `k` dividing every coefficient.
@@ -83,14 +103,24 @@ impl CentredInteger for Int {
     fn combination<'a>(terms: impl IntoIterator<Item = (&'a Int, &'a ZPoly)>) -> ZPoly {
         let mut acc: Vec<Int> = Vec::new();
         for (c, p) in terms {
-            if c.is_zero() {
-                continue;
+            if !c.is_zero() {
+                for (k, x) in p.coeffs().iter().enumerate() {
+                    accumulate(&mut acc, k, c, x);
+                }
             }
-            if acc.len() < p.coeffs().len() {
-                acc.resize(p.coeffs().len(), Int::zero());
-            }
-            for (a, x) in acc.iter_mut().zip(p.coeffs()) {
-                a.add_mul(c, x);
+        }
+        ZPoly::new(acc)
+    }
+    fn add_mul(&mut self, x: &Int, y: &Int) {
+        Int::add_mul(self, x, y);
+    }
+    fn dot<'a>(terms: impl IntoIterator<Item = (&'a ZPoly, &'a ZPoly)>) -> ZPoly {
+        let mut acc: Vec<Int> = Vec::new();
+        for (x, y) in terms {
+            for (i, xi) in x.coeffs().iter().enumerate() {
+                for (j, yj) in y.coeffs().iter().enumerate() {
+                    accumulate(&mut acc, i + j, xi, yj);
+                }
             }
         }
         ZPoly::new(acc)
@@ -100,6 +130,16 @@ impl CentredInteger for Int {
     }
     fn div_poly(p: &ZPoly, k: &Int) -> ZPoly {
         p.div_exact_int(k)
+    }
+}
+
+/// `acc[k] += x·y`, where `k ≤ acc.len()` (a new last coefficient is the
+/// product itself, not a sum with a zero).
+fn accumulate(acc: &mut Vec<Int>, k: usize, x: &Int, y: &Int) {
+    debug_assert!(k <= acc.len(), "coefficients are accumulated in order");
+    match acc.get_mut(k) {
+        Some(a) => a.add_mul(x, y),
+        None => acc.push(x * y),
     }
 }
 
@@ -125,6 +165,16 @@ impl CentredInteger for SmallInt {
             if !c.is_zero() {
                 acc.add_product(&SmallPoly::constant(c), p, false);
             }
+        }
+        acc
+    }
+    fn add_mul(&mut self, x: &SmallInt, y: &SmallInt) {
+        self.add_product(x, y, false);
+    }
+    fn dot<'a>(terms: impl IntoIterator<Item = (&'a SmallPoly, &'a SmallPoly)>) -> SmallPoly {
+        let mut acc = SmallPoly::zero();
+        for (x, y) in terms {
+            acc.add_product(x, y, false);
         }
         acc
     }
@@ -249,30 +299,10 @@ fn trace_product<I: CentredInteger>(m: &Mat3<I>, x: &Mat3<I>) -> I {
     let mut s = I::zero();
     for (mr, xr) in m.iter().zip(x) {
         for (a, b) in mr.iter().zip(xr) {
-            s.add_product(a, b, false);
+            s.add_mul(a, b);
         }
     }
     s
-}
-
-/// `vᵀ·m·v` for a symmetric constant `m`, from the products `vv[i][j] = v_i·v_j` (`i ≤ j`).
-fn quadratic_form<I: CentredInteger>(m: &Mat3<I>, vv: &[[I::Poly; 3]; 3]) -> I::Poly {
-    let doubled: Mat3<I> = std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            if i < j {
-                m[i][j].plus(&m[i][j])
-            } else {
-                I::zero()
-            }
-        })
-    });
-    I::combination((0..3).flat_map(|i| {
-        let (m, doubled) = (&m, &doubled);
-        (i..3).map(move |j| {
-            let c = if i == j { &m[i][i] } else { &doubled[i][j] };
-            (c, &vv[i][j])
-        })
-    }))
 }
 
 /// `det(λA + B)` (high → low in λ) times a positive constant, for two
@@ -280,10 +310,16 @@ fn quadratic_form<I: CentredInteger>(m: &Mat3<I>, vv: &[[I::Poly; 3]; 3]) -> I::
 /// [`SmallInt`] the result is exact unless a coefficient is overflowed,
 /// and then the very polynomials of the route over [`Int`].
 ///
-/// The outer coefficients are constants: with `b = K_B·e`,
-/// `bᵀ·adj K_B·b = det K_B·eᵀK_B·e` (`K·adj K·K = det K·K`), so
-/// `c_0 = −δ²κ_B·det K_B` and
-/// `c_4 = −δ²κ_A·det K_A` (the determinants of the two constant quadrics).
+/// In the powers of λ (module docs, `E_A = eᵀK_A·e`, `E_B = eᵀK_B·e`,
+/// `q = (K_B·e)ᵀ·adj K_A·(K_B·e)`):
+///
+/// - `c_4 = −δ²κ_A·det K_A`,
+/// - `c_3 = det K_A·E_B − δ²(κ_A·p₂ + κ_B·det K_A)`,
+/// - `c_2 = p₂·E_B − q − δ²(κ_A·p₁ + κ_B·p₂)`,
+/// - `c_1 = det K_B·E_A − δ²(κ_A·det K_B + κ_B·p₁)`,
+/// - `c_0 = −δ²κ_B·det K_B`,
+///
+/// with `p₁ = det(K_A + K_B) − det K_A − p₂ − det K_B` (`det P` at `λ = 1`).
 ///
 /// The numbers are kept short by positive constants the normalisation's
 /// content removal takes out anyway: `(e, δ)` divided by their common
@@ -316,65 +352,75 @@ pub(crate) fn centred_characteristic<I: CentredInteger>(
     } else {
         (e.map(|p| I::div_poly(&p, &h)), delta.div_exact(&h))
     };
-    // b = K_B·e and the products b_i·b_j.
-    let kb_e: [I::Poly; 3] =
-        std::array::from_fn(|i| I::combination((0..3).map(|j| (&b.k[i][j], &e[j]))));
-    let bb: [[I::Poly; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            if i <= j {
-                kb_e[i].times(&kb_e[j])
-            } else {
-                I::Poly::zero()
-            }
-        })
-    });
-    let delta2 = delta.times(&delta);
-    // s₀(u) = eᵀK_B·e − δ²κ_B.
-    let mut s0 = I::constant(&delta2.times(&b.kappa).negated());
-    for (ei, bi) in e.iter().zip(&kb_e) {
-        s0.add_product(ei, bi, false);
-    }
-    let (adj_a, adj_b) = (adj3(&a.k), adj3(&b.k));
+    // K·e for both blocks and the quadratic forms eᵀK·e; b = K_B·e and
+    // bᵀ·adj K_A·b.
+    let (ka_e, kb_e) = (times::<I>(&a.k, &e), times::<I>(&b.k, &e));
+    let (e_a, e_b) = (dot::<I>(&e, &ka_e), dot::<I>(&e, &kb_e));
+    let adj_a = adj3(&a.k);
+    let q = dot::<I>(&kb_e, &times::<I>(&adj_a, &kb_e));
+    // det P = λ³ det K_A + λ² p₂ + λ p₁ + det K_B, with p₁ from
+    // det(K_A + K_B) = det K_A + p₂ + p₁ + det K_B.
+    let (det_a, det_b) = (det3(&a.k), det3(&b.k));
+    let p2 = trace_product(&adj_a, &b.k);
     let sum: Mat3<I> = std::array::from_fn(|i| std::array::from_fn(|j| a.k[i][j].plus(&b.k[i][j])));
-    let adj_sum = adj3(&sum);
-    let mixed: Mat3<I> = std::array::from_fn(|i| {
-        std::array::from_fn(|j| adj_sum[i][j].minus(&adj_a[i][j]).minus(&adj_b[i][j]))
-    });
-    // det P, low → high in λ.
-    let p = [
-        det3(&b.k),
-        trace_product(&adj_b, &a.k),
-        trace_product(&adj_a, &b.k),
-        det3(&a.k),
-    ];
-    // bᵀ·adj P·b, low → high in λ (the constant term is not needed: c_0).
-    let q = [&mixed, &adj_a].map(|m| quadratic_form::<I>(m, &bb));
-    let da = delta2.times(&a.kappa);
-    let minus_one = I::from_i64(-1);
-    // c_k = p_k·s₀ − δ²κ_A·p_(k−1) − q_k for k = 1, 2, 3.
-    let c = |k: usize| -> I::Poly {
-        let ck = match q.get(k - 1) {
-            Some(qk) => I::combination([(&p[k], &s0), (&minus_one, qk)]),
-            None => I::combination([(&p[k], &s0)]),
-        };
-        ck.minus(&I::constant(&da.times(&p[k - 1])))
+    let p1 = det3(&sum).minus(&det_a).minus(&p2).minus(&det_b);
+    let delta2 = delta.times(&delta);
+    let (ka, kb) = (delta2.times(&a.kappa), delta2.times(&b.kappa));
+    // c_k times factor[k] (the rescaling of λ), with its constant part.
+    let factor = lambda_factors(&a.scale, &b.scale);
+    let scaled = |k: usize, x: &I| {
+        if factor[k].is_one() {
+            x.clone()
+        } else {
+            factor[k].times(x)
+        }
     };
-    let f = [
-        I::constant(&da.times(&p[3]).negated()),
-        c(3),
-        c(2),
-        c(1),
-        I::constant(&delta2.times(&b.kappa).times(&p[0]).negated()),
-    ];
-    rescale_lambda(f, &a.scale, &b.scale)
+    let one = I::constant(&I::one());
+    let constant = |k: usize, x: &I, y: &I, z: &I, w: &I| {
+        // −factor_k·(x·y + z·w)
+        let mut s = x.times(y);
+        s.add_product(z, w, false);
+        scaled(k, &s).negated()
+    };
+    let zero = I::zero();
+    let c3 = I::combination([
+        (&scaled(3, &det_a), &e_b),
+        (&constant(3, &ka, &p2, &kb, &det_a), &one),
+    ]);
+    let c2 = I::combination([
+        (&scaled(2, &p2), &e_b),
+        (&scaled(2, &I::from_i64(-1)), &q),
+        (&constant(2, &ka, &p1, &kb, &p2), &one),
+    ]);
+    let c1 = I::combination([
+        (&scaled(1, &det_b), &e_a),
+        (&constant(1, &ka, &det_b, &kb, &p1), &one),
+    ]);
+    [
+        I::constant(&constant(4, &ka, &det_a, &zero, &zero)),
+        c3,
+        c2,
+        c1,
+        I::constant(&constant(0, &kb, &det_b, &zero, &zero)),
+    ]
 }
 
-/// `c_k·p^k·q^(4−k)` for `[c_4, …, c_0]` (high → low in λ), with
-/// `p/q = s_A/s_B` in lowest terms: `det(λA + B)` up to a positive
-/// constant from `det(λA/s_A + B/s_B)` ([`centred_characteristic`]).
-fn rescale_lambda<I: CentredInteger>(f: [I::Poly; 5], s_a: &I, s_b: &I) -> [I::Poly; 5] {
+/// `m·v` for a constant matrix `m` and a vector of polynomials `v`.
+fn times<I: CentredInteger>(m: &Mat3<I>, v: &[I::Poly; 3]) -> [I::Poly; 3] {
+    std::array::from_fn(|i| I::combination((0..3).map(|j| (&m[i][j], &v[j]))))
+}
+
+/// `xᵀ·y` for vectors of polynomials.
+fn dot<I: CentredInteger>(x: &[I::Poly; 3], y: &[I::Poly; 3]) -> I::Poly {
+    I::dot(x.iter().zip(y))
+}
+
+/// `p^k·q^(4−k)` for `k = 0, …, 4`, with `p/q = s_A/s_B` in lowest terms:
+/// `c_k` of `det(λA/s_A + B/s_B)` times it is `c_k` of `det(λA + B)` up to
+/// the positive constant `(s_B/g)^4` ([`centred_characteristic`]).
+fn lambda_factors<I: CentredInteger>(s_a: &I, s_b: &I) -> [I; 5] {
     if s_a == s_b {
-        return f;
+        return std::array::from_fn(|_| I::one());
     }
     let g = s_a.gcd(s_b);
     let (p, q) = (s_a.div_exact(&g), s_b.div_exact(&g));
@@ -386,15 +432,7 @@ fn rescale_lambda<I: CentredInteger>(f: [I::Poly; 5], s_a: &I, s_b: &I) -> [I::P
         out
     };
     let (pp, qp) = (powers(&p), powers(&q));
-    let mut f = f;
-    for (i, c) in f.iter_mut().enumerate() {
-        // c = c_k with k = 4 − i.
-        let factor = pp[4 - i].times(&qp[i]);
-        if !factor.is_one() {
-            *c = I::combination([(&factor, &*c)]);
-        }
-    }
-    f
+    std::array::from_fn(|k| pp[k].times(&qp[4 - k]))
 }
 
 #[cfg(test)]
