@@ -49,8 +49,10 @@
 //! or two-digit radii and centres: `f` has at most about 120 bits), over
 //! [`Int`] otherwise: three-decimal radii already give `K` entries of
 //! about 60 bits and an `f` of about 250 bits. The bodies themselves
-//! ([`Centred`]) fit `i128` far more often, and are lifted to [`Int`] from
-//! there ([`Centred::lifted`]).
+//! ([`Centred`]) and the short numbers of the set-up ([`Offset`]: the
+//! centre offset, `K·e`, `eᵀK·e`, `adj K_A`) fit `i128` far more often,
+//! and are lifted to [`Int`] from there ([`Centred::lifted`],
+//! [`Offset::lifted`]).
 
 use crate::curve::Integer;
 use ccd_arith::{Int, RingOps, SmallInt};
@@ -305,6 +307,83 @@ fn trace_product<I: CentredInteger>(m: &Mat3<I>, x: &Mat3<I>) -> I {
     s
 }
 
+/// The short numbers of [`centred_characteristic`]: those of about the
+/// size of the bodies' own (twice the bits of `K` at most), which fit
+/// `i128` ([`SmallInt`]) far more often than `f` does, and so are formed
+/// there and lifted ([`Offset::lifted`]) even when `f` is not.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Offset<I: CentredInteger> {
+    /// `δ²`, with `d = c_B − c_A = e/δ`: `e = w_A·C_B − w_B·C_A` and
+    /// `δ = w_A·w_B`, both divided by their common content `h` (the
+    /// formula is homogeneous of degree 2 in `(e, δ)`, so `f` is divided
+    /// by `h²`).
+    pub(crate) delta2: I,
+    /// `b = K_B·e`.
+    pub(crate) kb_e: [I::Poly; 3],
+    /// `E_A = eᵀK_A·e`.
+    pub(crate) e_a: I::Poly,
+    /// `E_B = eᵀK_B·e`.
+    pub(crate) e_b: I::Poly,
+    /// `adj K_A`.
+    pub(crate) adj_a: Mat3<I>,
+}
+
+impl<I: CentredInteger> Offset<I> {
+    /// The short numbers of the bodies `a` and `b`.
+    pub(crate) fn new(a: &Centred<I>, b: &Centred<I>) -> Offset<I> {
+        let minus_wb = b.denominator.negated();
+        let e: [I::Poly; 3] = std::array::from_fn(|i| {
+            I::combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
+        });
+        let delta = a.denominator.times(&b.denominator);
+        let h = e.iter().fold(delta.abs(), |g, p| {
+            if g.is_one() {
+                g
+            } else {
+                I::gcd_content(&g, p)
+            }
+        });
+        let (e, delta) = if h.is_one() {
+            (e, delta)
+        } else {
+            (e.map(|p| I::div_poly(&p, &h)), delta.div_exact(&h))
+        };
+        let (ka_e, kb_e) = (times::<I>(&a.k, &e), times::<I>(&b.k, &e));
+        Offset {
+            delta2: delta.times(&delta),
+            e_a: dot::<I>(&e, &ka_e),
+            e_b: dot::<I>(&e, &kb_e),
+            kb_e,
+            adj_a: adj3(&a.k),
+        }
+    }
+}
+
+impl Offset<SmallInt> {
+    /// The same numbers over [`Int`], `None` if one overflowed.
+    pub(crate) fn lifted(&self) -> Option<Offset<Int>> {
+        let int = |x: &SmallInt| x.to_int();
+        let adj: Vec<Int> = self
+            .adj_a
+            .iter()
+            .flatten()
+            .map(int)
+            .collect::<Option<_>>()?;
+        let kb_e: Vec<ZPoly> = self
+            .kb_e
+            .iter()
+            .map(SmallPoly::to_zpoly)
+            .collect::<Option<_>>()?;
+        Some(Offset {
+            delta2: int(&self.delta2)?,
+            kb_e: kb_e.try_into().ok()?,
+            e_a: self.e_a.to_zpoly()?,
+            e_b: self.e_b.to_zpoly()?,
+            adj_a: std::array::from_fn(|i| std::array::from_fn(|j| adj[3 * i + j].clone())),
+        })
+    }
+}
+
 /// `det(λA + B)` (high → low in λ) times a positive constant, for two
 /// bodies that do not turn (module docs), over the integers `I`: over
 /// [`SmallInt`] the result is exact unless a coefficient is overflowed,
@@ -332,39 +411,23 @@ fn trace_product<I: CentredInteger>(m: &Mat3<I>, x: &Mat3<I>) -> I {
 pub(crate) fn centred_characteristic<I: CentredInteger>(
     a: &Centred<I>,
     b: &Centred<I>,
+    offset: &Offset<I>,
 ) -> [I::Poly; 5] {
-    // d = c_B − c_A = e/δ with e = w_A·C_B − w_B·C_A and δ = w_A·w_B,
-    // both divided by their common content (only δ² enters).
-    let minus_wb = b.denominator.negated();
-    let e: [I::Poly; 3] = std::array::from_fn(|i| {
-        I::combination([(&a.denominator, &b.centre[i]), (&minus_wb, &a.centre[i])])
-    });
-    let delta = a.denominator.times(&b.denominator);
-    let h = e.iter().fold(delta.abs(), |g, p| {
-        if g.is_one() {
-            g
-        } else {
-            I::gcd_content(&g, p)
-        }
-    });
-    let (e, delta) = if h.is_one() {
-        (e, delta)
-    } else {
-        (e.map(|p| I::div_poly(&p, &h)), delta.div_exact(&h))
-    };
-    // K·e for both blocks and the quadratic forms eᵀK·e; b = K_B·e and
-    // bᵀ·adj K_A·b.
-    let (ka_e, kb_e) = (times::<I>(&a.k, &e), times::<I>(&b.k, &e));
-    let (e_a, e_b) = (dot::<I>(&e, &ka_e), dot::<I>(&e, &kb_e));
-    let adj_a = adj3(&a.k);
-    let q = dot::<I>(&kb_e, &times::<I>(&adj_a, &kb_e));
+    let Offset {
+        delta2,
+        kb_e,
+        e_a,
+        e_b,
+        adj_a,
+    } = offset;
+    // q = bᵀ·adj K_A·b with b = K_B·e.
+    let q = dot::<I>(kb_e, &times::<I>(adj_a, kb_e));
     // det P = λ³ det K_A + λ² p₂ + λ p₁ + det K_B, with p₁ from
     // det(K_A + K_B) = det K_A + p₂ + p₁ + det K_B.
     let (det_a, det_b) = (det3(&a.k), det3(&b.k));
-    let p2 = trace_product(&adj_a, &b.k);
+    let p2 = trace_product(adj_a, &b.k);
     let sum: Mat3<I> = std::array::from_fn(|i| std::array::from_fn(|j| a.k[i][j].plus(&b.k[i][j])));
     let p1 = det3(&sum).minus(&det_a).minus(&p2).minus(&det_b);
-    let delta2 = delta.times(&delta);
     let (ka, kb) = (delta2.times(&a.kappa), delta2.times(&b.kappa));
     // c_k times factor[k] (the rescaling of λ), with its constant part.
     let factor = lambda_factors(&a.scale, &b.scale);
@@ -384,16 +447,16 @@ pub(crate) fn centred_characteristic<I: CentredInteger>(
     };
     let zero = I::zero();
     let c3 = I::combination([
-        (&scaled(3, &det_a), &e_b),
+        (&scaled(3, &det_a), e_b),
         (&constant(3, &ka, &p2, &kb, &det_a), &one),
     ]);
     let c2 = I::combination([
-        (&scaled(2, &p2), &e_b),
+        (&scaled(2, &p2), e_b),
         (&scaled(2, &I::from_i64(-1)), &q),
         (&constant(2, &ka, &p1, &kb, &p2), &one),
     ]);
     let c1 = I::combination([
-        (&scaled(1, &det_b), &e_a),
+        (&scaled(1, &det_b), e_a),
         (&constant(1, &ka, &det_b, &kb, &p1), &one),
     ]);
     [
@@ -540,7 +603,8 @@ mod tests {
             placed_quadric(a, &span).unwrap(),
             placed_quadric(b, &span).unwrap(),
         );
-        let f = centred_characteristic::<SmallInt>(&pa.centred()?, &pb.centred()?);
+        let (sa, sb) = (pa.centred::<SmallInt>()?, pb.centred::<SmallInt>()?);
+        let f = centred_characteristic(&sa, &sb, &Offset::new(&sa, &sb));
         f.iter().map(SmallPoly::to_zpoly).collect()
     }
 
@@ -552,7 +616,7 @@ mod tests {
             placed_quadric(b, &span).unwrap(),
         );
         let (ca, cb) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
-        centred_characteristic(&ca, &cb).to_vec()
+        centred_characteristic(&ca, &cb, &Offset::new(&ca, &cb)).to_vec()
     }
 
     #[test]
@@ -603,7 +667,8 @@ mod tests {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
         /// The route over `i128` ([`SmallInt`]) gives the very `f` of the
         /// route over [`Int`] whenever no number overflowed on the way, and
-        /// its bodies ([`Centred::lifted`]) are the `Int` ones: on numbers
+        /// its bodies ([`Centred::lifted`]) and short numbers
+        /// ([`Offset::lifted`]) are the `Int` ones: on numbers
         /// from one digit to far beyond `i128` (radii and centres with up
         /// to 9 decimals, quaternions over `7^k` up to about `2^70`), so
         /// both sides of the overflow boundary are reached.
@@ -629,6 +694,12 @@ mod tests {
                 proptest::prop_assert_eq!(small, exact);
             }
             let span = [Rat::zero(), Rat::one()];
+            let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
+            let (sa, sb) = (pa.centred::<SmallInt>().unwrap(), pb.centred::<SmallInt>().unwrap());
+            let (ia, ib) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
+            if let Some(lifted) = Offset::new(&sa, &sb).lifted() {
+                proptest::prop_assert_eq!(lifted, Offset::new(&ia, &ib));
+            }
             for body in [&a, &b] {
                 let p = placed_quadric(body, &span).unwrap();
                 let (small, int) = (p.centred::<SmallInt>().unwrap(), p.centred::<Int>().unwrap());

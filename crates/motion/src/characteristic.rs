@@ -22,7 +22,7 @@
 //! functions, and it also finds the λ-rescaling hidden in the homogeneous
 //! integer form of a rotation (`R = M(q)/|q|²`).
 
-use crate::centred::{centred_characteristic, Centred};
+use crate::centred::{centred_characteristic, Centred, Offset};
 use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
@@ -235,8 +235,10 @@ fn exact(f: [SmallPoly; 5]) -> Option<[SmallPoly; 5]> {
 fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
     // The bodies themselves are short numbers even when f is not.
     let (sa, sb) = (a.centred::<SmallInt>()?, b.centred::<SmallInt>()?);
+    // The short numbers of the set-up fit i128 even when f does not.
+    let offset = Offset::new(&sa, &sb);
     if Centred::worth_small(&sa, &sb) {
-        let f = centred_characteristic(&sa, &sb);
+        let f = centred_characteristic(&sa, &sb, &offset);
         if f.iter().all(SmallPoly::is_exact) {
             return Some(Quartic::Small(f));
         }
@@ -245,7 +247,8 @@ fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
         (Some(ia), Some(ib)) => (ia, ib),
         _ => (a.centred::<Int>()?, b.centred::<Int>()?),
     };
-    Some(Quartic::Exact(centred_characteristic(&ia, &ib)))
+    let offset = offset.lifted().unwrap_or_else(|| Offset::new(&ia, &ib));
+    Some(Quartic::Exact(centred_characteristic(&ia, &ib, &offset)))
 }
 
 /// `f = det(λA + B)` from one of the two routes of
