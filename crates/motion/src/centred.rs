@@ -199,19 +199,39 @@ impl CentredInteger for SmallInt {
     }
 }
 
+/// The constant part of a body that does not turn, at its centre: the
+/// quadric there is `scale·[[k, 0], [0, −kappa]]`.
+#[derive(Clone, Debug)]
+pub(crate) struct Block<I: CentredInteger> {
+    /// `K = XᵀD₃X`, divided by [`Block::scale`]: the integer quadric's
+    /// constant 3×3 block.
+    pub(crate) k: Mat3<I>,
+    /// `κ = −d₄·z² > 0`, divided by [`Block::scale`]: minus the integer
+    /// quadric's corner at its centre.
+    pub(crate) kappa: I,
+    /// The common content `s > 0` of `K` and `κ` taken out of them.
+    pub(crate) scale: I,
+}
+
+impl Block<SmallInt> {
+    /// The same block over [`Int`], `None` if a number overflowed.
+    pub(crate) fn lifted(&self) -> Option<Block<Int>> {
+        let int = |x: &SmallInt| x.to_int();
+        let k: Vec<Int> = self.k.iter().flatten().map(int).collect::<Option<_>>()?;
+        Some(Block {
+            k: std::array::from_fn(|i| std::array::from_fn(|j| k[3 * i + j].clone())),
+            kappa: int(&self.kappa)?,
+            scale: int(&self.scale)?,
+        })
+    }
+}
+
 /// A body that does not turn, as the frame of its own centre sees it, over
 /// the integers `I` ([`CentredInteger`]).
 #[derive(Clone, Debug)]
 pub(crate) struct Centred<I: CentredInteger> {
-    /// `K = XᵀD₃X`, divided by [`Centred::scale`]: the integer quadric's
-    /// constant 3×3 block.
-    pub(crate) k: Mat3<I>,
-    /// `κ = −d₄·z² > 0`, divided by [`Centred::scale`]: minus the integer
-    /// quadric's corner at its centre.
-    pub(crate) kappa: I,
-    /// The common content `s > 0` of `K` and `κ` taken out of them: the
-    /// quadric at the centre is `s·[[k, 0], [0, −kappa]]`.
-    pub(crate) scale: I,
+    /// `K`, `κ` and their content.
+    pub(crate) block: Block<I>,
     /// The centre curve `c(u)` times [`Centred::denominator`].
     pub(crate) centre: [I::Poly; 3],
     /// The centre curve's denominator (a nonzero integer).
@@ -221,7 +241,7 @@ pub(crate) struct Centred<I: CentredInteger> {
 impl<I: CentredInteger> Centred<I> {
     /// The body with block `k` (symmetric), corner `−kappa` (`kappa > 0`),
     /// centre curve `centre/denominator`; `k` and `kappa` are stored
-    /// divided by their common content ([`Centred::scale`]).
+    /// divided by their common content ([`Block::scale`]).
     pub(crate) fn new(k: Mat3<I>, kappa: I, centre: [I::Poly; 3], denominator: I) -> Centred<I> {
         let mut scale = kappa.abs();
         for (i, row) in k.iter().enumerate() {
@@ -241,9 +261,7 @@ impl<I: CentredInteger> Centred<I> {
             )
         };
         Centred {
-            k,
-            kappa,
-            scale,
+            block: Block { k, kappa, scale },
             centre,
             denominator,
         }
@@ -253,19 +271,15 @@ impl<I: CentredInteger> Centred<I> {
 impl Centred<SmallInt> {
     /// The same body over [`Int`], `None` if a number overflowed.
     pub(crate) fn lifted(&self) -> Option<Centred<Int>> {
-        let int = |x: &SmallInt| x.to_int();
-        let k: Vec<Int> = self.k.iter().flatten().map(int).collect::<Option<_>>()?;
         let centre: Vec<ZPoly> = self
             .centre
             .iter()
             .map(SmallPoly::to_zpoly)
             .collect::<Option<_>>()?;
         Some(Centred {
-            k: std::array::from_fn(|i| std::array::from_fn(|j| k[3 * i + j].clone())),
-            kappa: int(&self.kappa)?,
-            scale: int(&self.scale)?,
+            block: self.block.lifted()?,
             centre: centre.try_into().ok()?,
-            denominator: int(&self.denominator)?,
+            denominator: self.denominator.to_int()?,
         })
     }
 
@@ -279,7 +293,10 @@ impl Centred<SmallInt> {
             x.to_i128()
                 .map_or(128, |v| 128 - v.unsigned_abs().leading_zeros())
         };
-        let block = |c: &Centred<SmallInt>| c.k.iter().flatten().chain([&c.kappa]).map(bits).max();
+        let block = |c: &Centred<SmallInt>| {
+            let b = &c.block;
+            b.k.iter().flatten().chain([&b.kappa]).map(bits).max()
+        };
         let centre = |c: &Centred<SmallInt>| {
             let poly = c
                 .centre
@@ -291,7 +308,7 @@ impl Centred<SmallInt> {
         };
         let k = block(a).max(block(b)).unwrap_or(0);
         let e = centre(a).max(centre(b)) + 1;
-        let s = bits(&a.scale).max(bits(&b.scale));
+        let s = bits(&a.block.scale).max(bits(&b.block.scale));
         4 * k + 2 * e + 4 * s + 12 <= 126
     }
 }
@@ -348,13 +365,13 @@ impl<I: CentredInteger> Offset<I> {
         } else {
             (e.map(|p| I::div_poly(&p, &h)), delta.div_exact(&h))
         };
-        let (ka_e, kb_e) = (times::<I>(&a.k, &e), times::<I>(&b.k, &e));
+        let (ka_e, kb_e) = (times::<I>(&a.block.k, &e), times::<I>(&b.block.k, &e));
         Offset {
             delta2: delta.times(&delta),
             e_a: dot::<I>(&e, &ka_e),
             e_b: dot::<I>(&e, &kb_e),
             kb_e,
-            adj_a: adj3(&a.k),
+            adj_a: adj3(&a.block.k),
         }
     }
 }
@@ -385,7 +402,9 @@ impl Offset<SmallInt> {
 }
 
 /// `det(λA + B)` (high → low in λ) times a positive constant, for two
-/// bodies that do not turn (module docs), over the integers `I`: over
+/// bodies that do not turn (module docs) with blocks `a`, `b` and the
+/// short numbers `offset` ([`Offset::new`] of the two), over the
+/// integers `I`: over
 /// [`SmallInt`] the result is exact unless a coefficient is overflowed,
 /// and then the very polynomials of the route over [`Int`].
 ///
@@ -402,15 +421,14 @@ impl Offset<SmallInt> {
 ///
 /// The numbers are kept short by positive constants the normalisation's
 /// content removal takes out anyway: `(e, δ)` divided by their common
-/// content `h` (the formula is homogeneous of degree 2 in them, so `f`
-/// is divided by `h²`), and each body's `K, κ` by theirs, `s_A` and `s_B`
-/// ([`Centred::scale`]). The latter rescales λ: `det(λA/s_A + B/s_B)` has
+/// content `h` ([`Offset::delta2`]), and each body's `K, κ` by theirs, `s_A` and `s_B`
+/// ([`Block::scale`]). The latter rescales λ: `det(λA/s_A + B/s_B)` has
 /// coefficients `c_k/(s_A^k·s_B^(4−k))`, so each is multiplied back by
 /// `p^k·q^(4−k)` with `p/q = s_A/s_B` in lowest terms (a positive
 /// constant times `c_k`).
 pub(crate) fn centred_characteristic<I: CentredInteger>(
-    a: &Centred<I>,
-    b: &Centred<I>,
+    a: &Block<I>,
+    b: &Block<I>,
     offset: &Offset<I>,
 ) -> [I::Poly; 5] {
     let Offset {
@@ -604,7 +622,7 @@ mod tests {
             placed_quadric(b, &span).unwrap(),
         );
         let (sa, sb) = (pa.centred::<SmallInt>()?, pb.centred::<SmallInt>()?);
-        let f = centred_characteristic(&sa, &sb, &Offset::new(&sa, &sb));
+        let f = centred_characteristic(&sa.block, &sb.block, &Offset::new(&sa, &sb));
         f.iter().map(SmallPoly::to_zpoly).collect()
     }
 
@@ -616,7 +634,7 @@ mod tests {
             placed_quadric(b, &span).unwrap(),
         );
         let (ca, cb) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
-        centred_characteristic(&ca, &cb, &Offset::new(&ca, &cb)).to_vec()
+        centred_characteristic(&ca.block, &cb.block, &Offset::new(&ca, &cb)).to_vec()
     }
 
     #[test]
@@ -704,10 +722,11 @@ mod tests {
                 let p = placed_quadric(body, &span).unwrap();
                 let (small, int) = (p.centred::<SmallInt>().unwrap(), p.centred::<Int>().unwrap());
                 if let Some(lifted) = small.lifted() {
-                    proptest::prop_assert_eq!(&lifted.k, &int.k);
+                    let (l, i) = (&lifted.block, &int.block);
+                    proptest::prop_assert_eq!(&l.k, &i.k);
                     proptest::prop_assert_eq!(
-                        (&lifted.kappa, &lifted.scale, &lifted.centre, &lifted.denominator),
-                        (&int.kappa, &int.scale, &int.centre, &int.denominator)
+                        (&l.kappa, &l.scale, &lifted.centre, &lifted.denominator),
+                        (&i.kappa, &i.scale, &int.centre, &int.denominator)
                     );
                 }
             }

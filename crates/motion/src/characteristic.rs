@@ -238,17 +238,24 @@ fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
     // The short numbers of the set-up fit i128 even when f does not.
     let offset = Offset::new(&sa, &sb);
     if Centred::worth_small(&sa, &sb) {
-        let f = centred_characteristic(&sa, &sb, &offset);
+        let f = centred_characteristic(&sa.block, &sb.block, &offset);
         if f.iter().all(SmallPoly::is_exact) {
             return Some(Quartic::Small(f));
         }
     }
-    let (ia, ib) = match (sa.lifted(), sb.lifted()) {
-        (Some(ia), Some(ib)) => (ia, ib),
-        _ => (a.centred::<Int>()?, b.centred::<Int>()?),
+    // Over Int: only the blocks and the short numbers are needed there.
+    let lifted = (offset.lifted(), sa.block.lifted(), sb.block.lifted());
+    let (offset, ba, bb) = match lifted {
+        (Some(offset), Some(ba), Some(bb)) => (offset, ba, bb),
+        _ => {
+            let (ia, ib) = match (sa.lifted(), sb.lifted()) {
+                (Some(ia), Some(ib)) => (ia, ib),
+                _ => (a.centred::<Int>()?, b.centred::<Int>()?),
+            };
+            (Offset::new(&ia, &ib), ia.block, ib.block)
+        }
     };
-    let offset = offset.lifted().unwrap_or_else(|| Offset::new(&ia, &ib));
-    Some(Quartic::Exact(centred_characteristic(&ia, &ib, &offset)))
+    Some(Quartic::Exact(centred_characteristic(&ba, &bb, &offset)))
 }
 
 /// `f = det(λA + B)` from one of the two routes of
