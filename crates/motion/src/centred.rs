@@ -271,14 +271,9 @@ impl<I: CentredInteger> Centred<I> {
 impl Centred<SmallInt> {
     /// The same body over [`Int`], `None` if a number overflowed.
     pub(crate) fn lifted(&self) -> Option<Centred<Int>> {
-        let centre: Vec<ZPoly> = self
-            .centre
-            .iter()
-            .map(SmallPoly::to_zpoly)
-            .collect::<Option<_>>()?;
         Some(Centred {
             block: self.block.lifted()?,
-            centre: centre.try_into().ok()?,
+            centre: SmallPoly::to_zpolys(&self.centre)?,
             denominator: self.denominator.to_int()?,
         })
     }
@@ -386,14 +381,10 @@ impl Offset<SmallInt> {
             .flatten()
             .map(int)
             .collect::<Option<_>>()?;
-        let kb_e: Vec<ZPoly> = self
-            .kb_e
-            .iter()
-            .map(SmallPoly::to_zpoly)
-            .collect::<Option<_>>()?;
+
         Some(Offset {
             delta2: int(&self.delta2)?,
-            kb_e: kb_e.try_into().ok()?,
+            kb_e: SmallPoly::to_zpolys(&self.kb_e)?,
             e_a: self.e_a.to_zpoly()?,
             e_b: self.e_b.to_zpoly()?,
             adj_a: std::array::from_fn(|i| std::array::from_fn(|j| adj[3 * i + j].clone())),

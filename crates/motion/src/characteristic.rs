@@ -282,12 +282,6 @@ enum Quartic {
     Exact([ZPoly; 5]),
 }
 
-/// The exact coefficients, unless a [`SmallPoly`] step overflowed.
-fn lift(f: [SmallPoly; 5]) -> Option<[ZPoly; 5]> {
-    let v: Option<Vec<ZPoly>> = f.iter().map(SmallPoly::to_zpoly).collect();
-    v?.try_into().ok()
-}
-
 /// `f(λ; u)` of two moving bodies, normalised (module docs) with the
 /// determinant factors the motions know.
 pub fn char_poly(a: &Body, b: &Body, span: &[Rat; 2]) -> Result<CharPoly, MotionError> {
@@ -509,9 +503,9 @@ fn normalise_small(f: &[SmallPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
         .map(SmallPoly::from_zpoly)
         .collect::<Option<Vec<_>>>()
         .and_then(|pis| normalise_in(f.clone(), &pis))
-        .and_then(lift)
+        .and_then(|f| SmallPoly::to_zpolys(&f))
         .unwrap_or_else(|| {
-            let f = lift(f.clone()).expect("an exact f");
+            let f = SmallPoly::to_zpolys(f).expect("an exact f");
             normalise_in(f, &basis).expect("ZPoly arithmetic is exact")
         })
 }

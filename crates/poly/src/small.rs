@@ -121,6 +121,12 @@ impl SmallPoly {
         })
     }
 
+    /// The exact polynomials of an array, `None` if any overflowed.
+    pub fn to_zpolys<const N: usize>(ps: &[SmallPoly; N]) -> Option<[ZPoly; N]> {
+        let v: Vec<ZPoly> = ps.iter().map(SmallPoly::to_zpoly).collect::<Option<_>>()?;
+        v.try_into().ok()
+    }
+
     /// Whether the value is exact (no operation overflowed).
     pub fn is_exact(&self) -> bool {
         !self.overflow
