@@ -135,10 +135,14 @@ impl CentredInteger for Int {
     }
 }
 
-/// `acc[k] += x·y`, where `k ≤ acc.len()` (a new last coefficient is the
-/// product itself, not a sum with a zero).
+/// `acc[k] += x·y` (a new last coefficient is the product itself, not a
+/// sum with a zero). The callers accumulate in order, `k ≤ acc.len()`;
+/// were that ever broken, the gap is filled with zeros, so the sum stays
+/// right.
 fn accumulate(acc: &mut Vec<Int>, k: usize, x: &Int, y: &Int) {
-    debug_assert!(k <= acc.len(), "coefficients are accumulated in order");
+    if k > acc.len() {
+        acc.resize(k, Int::zero());
+    }
     match acc.get_mut(k) {
         Some(a) => a.add_mul(x, y),
         None => acc.push(x * y),
@@ -722,5 +726,246 @@ mod tests {
                 }
             }
         }
+    }
+
+    // From the soundness review of the i128 route (session 11): the
+    // degenerate cases the generators above do not reach.
+    use crate::curve::Integer;
+    use ccd_arith::Ring;
+
+    /// A body with the given orientation/radii and centre motion.
+    fn body_of(radii: [Rat; 3], q: [Rat; 4], pts: Vec<[Rat; 3]>) -> Body {
+        let mut q = q;
+        if q.iter().all(Rat::is_zero) {
+            q[0] = Rat::one();
+        }
+        let motion = if pts.len() == 1 {
+            Motion::Static {
+                center: pts[0].clone(),
+                orientation: q,
+            }
+        } else {
+            Motion::Translation {
+                center: Bezier {
+                    points: pts,
+                    weights: None,
+                },
+                orientation: q,
+            }
+        };
+        Body { radii, motion }
+    }
+
+    fn general_and_centred(a: &Body, b: &Body) -> (CharPoly, CharPoly) {
+        let span = [Rat::zero(), Rat::one()];
+        let (pa, pb) = (
+            placed_quadric(a, &span).unwrap(),
+            placed_quadric(b, &span).unwrap(),
+        );
+        assert!(!pa.turns() && !pb.turns());
+        let general = CharPoly {
+            coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())),
+        };
+        (CharPoly::from_placed(&pa, &pb), general)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
+        /// e = 0 (the same centre, static or along the same curve), and a
+        /// constant offset (the same curve shifted): long numbers, both
+        /// the i128 and the Int route (`big` scales every number).
+        #[test]
+        fn centred_route_with_equal_and_parallel_centres(
+            radii in proptest::collection::vec((1i64..1000, 1i64..1000), 6),
+            quats in proptest::collection::vec((-7i64..8, 1i64..50), 8),
+            points in proptest::collection::vec((-1_000_000i64..1_000_000, 1i64..1000), 12),
+            shift in proptest::collection::vec((-1000i64..1000, 1i64..100), 3),
+            deg in 0usize..4,
+            big in 0u32..30,
+            same_shape in proptest::bool::ANY,
+            parallel in proptest::bool::ANY,
+            short in proptest::bool::ANY,
+        ) {
+            // Short numbers (the i128 route) or long ones (Int, lifted).
+            let shorten = |v: &Vec<(i64, i64)>, m: i64, dm: i64| -> Vec<(i64, i64)> {
+                if short { v.iter().map(|&(n, d)| (n % m, d % dm + 1)).collect() } else { v.clone() }
+            };
+            let radii: Vec<(i64, i64)> = shorten(&radii, 6, 2).into_iter().map(|(n, d)| (n.abs().max(1), d)).collect();
+            let quats = shorten(&quats, 8, 1);
+            let points = shorten(&points, 10, 3);
+            let shift = shorten(&shift, 10, 2);
+            let big = if short { 0 } else { big };
+            let scale = Rat::from_int(ccd_arith::Int::from(7).pow(big));
+            let r = |k: usize| -> [Rat; 3] { std::array::from_fn(|i| { let (n, d) = radii[3 * k + i]; &rat(n, d) * &scale }) };
+            let q = |k: usize| -> [Rat; 4] { std::array::from_fn(|i| { let (n, d) = quats[4 * k + i]; rat(n, d) }) };
+            let pts: Vec<[Rat; 3]> = (0..=deg).map(|p| std::array::from_fn(|i| { let (n, d) = points[3 * p + i]; &rat(n, d) * &scale })).collect();
+            let s: [Rat; 3] = std::array::from_fn(|i| { let (n, d) = shift[i]; if parallel { &rat(n, d) * &scale } else { Rat::zero() } });
+            let pts_b: Vec<[Rat; 3]> = pts.iter().map(|p| std::array::from_fn(|i| &p[i] + &s[i])).collect();
+            let a = body_of(r(0), q(0), pts);
+            let b = if same_shape { body_of(r(0), q(0), pts_b) } else { body_of(r(1), q(1), pts_b) };
+            let (centred, general) = general_and_centred(&a, &b);
+            proptest::prop_assert_eq!(centred, general);
+            // And with the roles swapped.
+            let (centred, general) = general_and_centred(&b, &a);
+            proptest::prop_assert_eq!(centred, general);
+        }
+    }
+
+    /// The overflow marker through the CentredInteger methods.
+    #[test]
+    fn the_overflow_marker_stays_overflowed() {
+        let m = SmallInt::overflowed();
+        assert!(CentredInteger::abs(&m).to_i128().is_none());
+        assert!(!m.is_zero() && !m.is_one() && m != m);
+        assert!(m.negated().to_i128().is_none());
+        assert!(m.gcd(&SmallInt::one()).to_i128().is_none());
+        assert!(SmallInt::one().div_exact(&m).to_i128().is_none());
+        assert!(m.div_exact(&SmallInt::one()).to_i128().is_none());
+        assert!(SmallInt::zero().div_exact(&m).to_i128().is_none());
+        assert!(SmallInt::zero().times(&m).to_i128().is_none());
+        // A legitimate SmallPoly coefficient −2^127: its content 2^127 is not an i128.
+        let c = SmallPoly::from_i64(i64::MIN)
+            .times(&SmallPoly::from_i64(i64::MAX))
+            .plus(&SmallPoly::from_i64(i64::MIN)); // −2^126
+        let p = c.plus(&c); // −2^127 (checked_add gives i128::MIN)
+        assert!(p.is_exact());
+        assert!(
+            <SmallInt as CentredInteger>::gcd_content(&SmallInt::zero(), &p)
+                .to_i128()
+                .is_none()
+        );
+        assert_eq!(
+            <SmallInt as CentredInteger>::gcd_content(&SmallInt::from_i64(6), &p).to_i128(),
+            Some(2)
+        );
+        assert!(!<SmallInt as CentredInteger>::div_poly(&SmallPoly::one(), &m).is_exact());
+        assert!(!<SmallInt as CentredInteger>::combination([(&m, &SmallPoly::one())]).is_exact());
+        // abs(−(2^127 − 1)) = 2^127 − 1 exactly.
+        let x = SmallInt::from_i128(-i128::MAX);
+        assert_eq!(CentredInteger::abs(&x).to_i128(), Some(i128::MAX));
+        // lambda_factors on an overflowed scale.
+        let f = lambda_factors(&m, &SmallInt::one());
+        assert!(f.iter().all(|x| x.to_i128().is_none()));
+        let f = lambda_factors(&m, &m);
+        assert!(f.iter().all(|x| x.to_i128().is_none()));
+        // A Block with one overflowed entry does not lift, and f is overflowed.
+        let one = SmallInt::one();
+        let z = SmallInt::zero();
+        let mut k = [[one, z, z], [z, one, z], [z, z, one]];
+        let good = Centred::new(k, one, std::array::from_fn(|_| SmallPoly::zero()), one);
+        k[2][2] = m;
+        let bad = Centred::new(k, one, std::array::from_fn(|_| SmallPoly::zero()), one);
+        assert!(bad.block.lifted().is_none() && bad.lifted().is_none());
+        let f = centred_characteristic(&good.block, &bad.block, &Offset::new(&good, &bad));
+        assert!(f.iter().any(|p| !p.is_exact()));
+        let f = centred_characteristic(&bad.block, &good.block, &Offset::new(&bad, &good));
+        assert!(f.iter().any(|p| !p.is_exact()));
+        // Overflowed centre: the offset does not lift.
+        let over_centre = Centred::new(
+            [[one, z, z], [z, one, z], [z, z, one]],
+            one,
+            [SmallPoly::one(), SmallPoly::constant(&m), SmallPoly::one()],
+            one,
+        );
+        assert!(Offset::new(&good, &over_centre).lifted().is_none());
+        assert!(Offset::new(&over_centre, &good).lifted().is_none());
+        let f = centred_characteristic(
+            &good.block,
+            &over_centre.block,
+            &Offset::new(&good, &over_centre),
+        );
+        assert!(f.iter().any(|p| !p.is_exact()));
+        // Overflowed denominator.
+        let over_den = Centred::new(
+            [[one, z, z], [z, one, z], [z, z, one]],
+            one,
+            std::array::from_fn(|_| SmallPoly::one()),
+            m,
+        );
+        assert!(Offset::new(&good, &over_den).lifted().is_none());
+        assert!(Offset::new(&over_den, &good).lifted().is_none());
+    }
+
+    /// Translations with equal (negative, or long) weights: a constant
+    /// weight curve, so the centred route; zero weights are an error.
+    #[test]
+    fn weighted_translations_take_the_centred_route() {
+        let q = [rat(1, 1), rat(2, 3), rat(0, 1), rat(-1, 5)];
+        let pts = vec![
+            [rat(1, 3), rat(-2, 7), rat(5, 1)],
+            [rat(4, 1), rat(1, 1), rat(-3, 2)],
+            [rat(0, 1), rat(9, 4), rat(2, 1)],
+        ];
+        let radii = [rat(1, 1), rat(2, 1), rat(3, 2)];
+        let other = body_of(
+            [rat(1, 2), rat(1, 1), rat(5, 3)],
+            [rat(0, 1), rat(1, 1), rat(1, 1), rat(0, 1)],
+            vec![
+                [rat(1, 1), rat(0, 1), rat(2, 1)],
+                [rat(-1, 1), rat(3, 1), rat(2, 1)],
+            ],
+        );
+        for w in [rat(-1, 1), rat(-7, 3), rat(1_000_000_007, 3)] {
+            let body = Body {
+                radii: radii.clone(),
+                motion: Motion::Translation {
+                    center: Bezier {
+                        points: pts.clone(),
+                        weights: Some(vec![w.clone(); 3]),
+                    },
+                    orientation: q.clone(),
+                },
+            };
+            let (c, g) = general_and_centred(&body, &other);
+            assert_eq!(c, g, "weight {w:?}");
+            let (c, g) = general_and_centred(&other, &body);
+            assert_eq!(c, g, "weight {w:?}");
+            let span = [Rat::zero(), Rat::one()];
+            assert!(placed_quadric(&body, &span)
+                .unwrap()
+                .centred::<Int>()
+                .is_some());
+        }
+        let zero = Body {
+            radii,
+            motion: Motion::Translation {
+                center: Bezier {
+                    points: pts,
+                    weights: Some(vec![Rat::zero(); 3]),
+                },
+                orientation: q,
+            },
+        };
+        assert!(placed_quadric(&zero, &[Rat::zero(), Rat::one()]).is_err());
+    }
+
+    /// A centre curve beyond SmallPoly's capacity (degree 20, short numbers).
+    #[test]
+    fn a_centre_curve_too_long_for_i128_takes_the_int_route() {
+        let pts: Vec<[Rat; 3]> = (0..21i64)
+            .map(|i| [rat(i % 3, 1), rat(-(i % 5), 1), rat(i % 2, 1)])
+            .collect();
+        let a = body_of(
+            [rat(1, 1), rat(2, 1), rat(1, 1)],
+            [rat(1, 1), rat(0, 1), rat(0, 1), rat(0, 1)],
+            pts,
+        );
+        let b = body_of(
+            [rat(1, 1), rat(1, 1), rat(1, 1)],
+            [rat(1, 1), rat(1, 1), rat(0, 1), rat(0, 1)],
+            vec![[rat(3, 1), rat(0, 1), rat(0, 1)]],
+        );
+        let span = [Rat::zero(), Rat::one()];
+        let (pa, pb) = (
+            placed_quadric(&a, &span).unwrap(),
+            placed_quadric(&b, &span).unwrap(),
+        );
+        let sa = pa.centred::<SmallInt>().unwrap();
+        assert!(sa.lifted().is_none(), "degree 20 does not fit SmallPoly");
+        let (c, g) = general_and_centred(&a, &b);
+        assert_eq!(c, g);
+        let (c, g) = general_and_centred(&b, &a);
+        assert_eq!(c, g);
+        drop(pb);
     }
 }
