@@ -291,11 +291,9 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
     };
     let raw = v["timeline"].as_array().expect("checked above");
     // The gaps (issue 18): pieces of the span the timeline does not cover,
-    // each with exact ends and a reason.
-    // A gap's witness, when present, is a proven non-separate exact
-    // instant inside it.
-    let mut witnesses: Vec<Option<Rat>> = Vec::new();
-    let gaps: Vec<(Rat, Rat)> = match v["gaps"].as_array() {
+    // each with exact ends, a reason and its witness, when present: a
+    // proven non-separate exact instant inside it.
+    let gaps: Vec<(Rat, Rat, Option<Rat>)> = match v["gaps"].as_array() {
         None => vec![],
         Some(gaps) => gaps
             .iter()
@@ -316,15 +314,14 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
                     }
                     Some(t)
                 };
-                witnesses.push(t);
-                Ok((lo, hi))
+                Ok((lo, hi, t))
             })
             .collect::<Result<_, Failure>>()?,
     };
     // Segments and gaps tile the span in order from t0, without holes.
     enum Piece<'a> {
         Seg(usize, &'a Segment),
-        Gap(&'a (Rat, Rat)),
+        Gap(&'a (Rat, Rat, Option<Rat>)),
     }
     let mut pieces: Vec<(&Rat, Piece<'_>)> = segs
         .iter()
@@ -421,16 +418,10 @@ fn timeline(v: &Value) -> Result<([Rat; 2], Vec<Segment>), Failure> {
     let known = pieces.iter().find_map(|(_, p)| match p {
         Piece::Seg(_, s) if s.state != State::Separate => Some(s.start.clone()),
         Piece::Seg(..) => None,
-        Piece::Gap(g) => {
-            let k = gaps
-                .iter()
-                .position(|x| std::ptr::eq(x, *g))
-                .expect("a gap");
-            witnesses[k].clone().map(|t| Time {
-                lo: g.0.clone(),
-                hi: t,
-            })
-        }
+        Piece::Gap((lo, _, witness)) => witness.clone().map(|t| Time {
+            lo: lo.clone(),
+            hi: t,
+        }),
     });
     let reported = match &v["first_contact"] {
         Value::Null => None,

@@ -151,14 +151,7 @@ impl Rat {
         if x == 0.0 {
             return Some(Rat::zero());
         }
-        let bits = x.to_bits();
-        let exp = ((bits >> 52) & 0x7ff) as i64;
-        let frac = bits & ((1u64 << 52) - 1);
-        let (m, e) = if exp == 0 {
-            (frac, -1074)
-        } else {
-            (frac | (1u64 << 52), exp - 1075)
-        };
+        let (m, e) = f64_parts(x);
         // In lowest terms directly: m odd after stripping its trailing
         // zeros, so `m·2^e` is `m·2^e / 1` (e ≥ 0) or `m / 2^−e`.
         let tz = m.trailing_zeros();
@@ -314,6 +307,19 @@ macro_rules! owned_rat_ops {
 }
 owned_rat_ops!(Add add, Sub sub, Mul mul, Div div);
 
+/// `|x| = m·2^e` for a finite `f64` `x`: the significand with its hidden
+/// bit (none for a subnormal) and the exponent of its last bit.
+fn f64_parts(x: f64) -> (u64, i64) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -332,14 +338,7 @@ mod tests {
         if x == 0.0 {
             return Some(Rat::zero());
         }
-        let bits = x.to_bits();
-        let exp = ((bits >> 52) & 0x7ff) as i64;
-        let frac = bits & ((1u64 << 52) - 1);
-        let (m, e) = if exp == 0 {
-            (frac, -1074)
-        } else {
-            (frac | (1u64 << 52), exp - 1075)
-        };
+        let (m, e) = f64_parts(x);
         let v = Rat::from_int(Int::from_u64(m)).mul_pow2(e);
         Some(if x < 0.0 { -v } else { v })
     }

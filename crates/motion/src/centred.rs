@@ -515,12 +515,57 @@ fn lambda_factors<I: CentredInteger>(s_a: &I, s_b: &I) -> [I; 5] {
 mod tests {
     use super::*;
     use crate::kinds::{Bezier, Body, Motion};
-    use crate::matrices::placed_quadric;
+    use crate::matrices::{placed_quadric, PlacedQuadric};
     use crate::{normalise, CharPoly};
     use ccd_arith::Rat;
 
     fn rat(n: i64, d: i64) -> Rat {
         Rat::from_frac(n, d)
+    }
+
+    /// A body that never turns: static at `pts[0]` when there is one
+    /// control point, else translating along the Bézier curve `pts`; a
+    /// zero quaternion is replaced by the identity.
+    fn body_of(radii: [Rat; 3], q: [Rat; 4], pts: Vec<[Rat; 3]>) -> Body {
+        let mut q = q;
+        if q.iter().all(Rat::is_zero) {
+            q[0] = Rat::one();
+        }
+        let motion = if pts.len() == 1 {
+            Motion::Static {
+                center: pts[0].clone(),
+                orientation: q,
+            }
+        } else {
+            Motion::Translation {
+                center: Bezier {
+                    points: pts,
+                    weights: None,
+                },
+                orientation: q,
+            }
+        };
+        Body { radii, motion }
+    }
+
+    /// The two bodies placed over `u ∈ [0, 1]`.
+    fn placed_pair(a: &Body, b: &Body) -> (PlacedQuadric, PlacedQuadric) {
+        let span = [Rat::zero(), Rat::one()];
+        (
+            placed_quadric(a, &span).unwrap(),
+            placed_quadric(b, &span).unwrap(),
+        )
+    }
+
+    /// `f` of the centred route and of the general route (`det` of the two
+    /// integer quadrics, normalised), for two bodies that never turn.
+    fn general_and_centred(a: &Body, b: &Body) -> (CharPoly, CharPoly) {
+        let (pa, pb) = placed_pair(a, b);
+        assert!(!pa.turns() && !pb.turns());
+        let general = CharPoly {
+            coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())),
+        };
+        (CharPoly::from_placed(&pa, &pb), general)
     }
 
     proptest::proptest! {
@@ -538,10 +583,7 @@ mod tests {
             big in 0u32..40,
         ) {
             let body = |k: usize, deg: usize| {
-                let mut q: [Rat; 4] = std::array::from_fn(|i| { let (n, d) = quats[4 * k + i]; rat(n, d) });
-                if q.iter().all(Rat::is_zero) {
-                    q[0] = Rat::one();
-                }
+                let q: [Rat; 4] = std::array::from_fn(|i| { let (n, d) = quats[4 * k + i]; rat(n, d) });
                 let scale = Rat::from_int(ccd_arith::Int::from(3).pow(big));
                 let pts: Vec<[Rat; 3]> = (0..=deg)
                     .map(|p| std::array::from_fn(|i| {
@@ -549,21 +591,14 @@ mod tests {
                         &rat(n, d) * &scale
                     }))
                     .collect();
-                let orientation = q;
-                let motion = if deg == 0 {
-                    Motion::Static { center: pts[0].clone(), orientation }
-                } else {
-                    Motion::Translation { center: Bezier { points: pts, weights: None }, orientation }
-                };
                 let radii = std::array::from_fn(|i| { let (n, d) = radii[3 * k + i]; rat(n, d) });
-                Body { radii, motion }
+                body_of(radii, q, pts)
             };
-            let span = [Rat::zero(), Rat::one()];
             let (a, b) = (body(0, degrees.0), body(1, degrees.1));
-            let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
-            let general = CharPoly { coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())) };
+            let (pa, pb) = placed_pair(&a, &b);
             proptest::prop_assert!(pa.centred::<ccd_arith::Int>().is_some() && pb.centred::<ccd_arith::Int>().is_some());
-            proptest::prop_assert_eq!(CharPoly::from_placed(&pa, &pb), general);
+            let (centred, general) = general_and_centred(&a, &b);
+            proptest::prop_assert_eq!(centred, general);
         }
     }
 
@@ -580,42 +615,18 @@ mod tests {
             Rat::new(ccd_arith::Int::from(n), ccd_arith::Int::from(10).pow(d)).expect("nonzero")
         };
         let den = ccd_arith::Int::from(7).pow(quat_den);
-        let mut q: [Rat; 4] = std::array::from_fn(|i| {
+        let q: [Rat; 4] = std::array::from_fn(|i| {
             Rat::new(ccd_arith::Int::from(quat[i]), den.clone()).expect("nonzero")
         });
-        if q.iter().all(Rat::is_zero) {
-            q[0] = Rat::one();
-        }
         let pts: Vec<[Rat; 3]> = (0..=deg)
             .map(|p| std::array::from_fn(|i| decimal(points[3 * p + i])))
             .collect();
-        let motion = if deg == 0 {
-            Motion::Static {
-                center: pts[0].clone(),
-                orientation: q,
-            }
-        } else {
-            Motion::Translation {
-                center: Bezier {
-                    points: pts,
-                    weights: None,
-                },
-                orientation: q,
-            }
-        };
-        Body {
-            radii: std::array::from_fn(|i| decimal(radii[i])),
-            motion,
-        }
+        body_of(std::array::from_fn(|i| decimal(radii[i])), q, pts)
     }
 
     /// `f` over `i128`, `None` when a number overflowed there.
     fn small_f(a: &Body, b: &Body) -> Option<Vec<ZPoly>> {
-        let span = [Rat::zero(), Rat::one()];
-        let (pa, pb) = (
-            placed_quadric(a, &span).unwrap(),
-            placed_quadric(b, &span).unwrap(),
-        );
+        let (pa, pb) = placed_pair(a, b);
         let (sa, sb) = (pa.centred::<SmallInt>()?, pb.centred::<SmallInt>()?);
         let f = centred_characteristic(&sa.block, &sb.block, &Offset::new(&sa, &sb));
         f.iter().map(SmallPoly::to_zpoly).collect()
@@ -623,11 +634,7 @@ mod tests {
 
     /// `f` over [`Int`].
     fn int_f(a: &Body, b: &Body) -> Vec<ZPoly> {
-        let span = [Rat::zero(), Rat::one()];
-        let (pa, pb) = (
-            placed_quadric(a, &span).unwrap(),
-            placed_quadric(b, &span).unwrap(),
-        );
+        let (pa, pb) = placed_pair(a, b);
         let (ca, cb) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
         centred_characteristic(&ca.block, &cb.block, &Offset::new(&ca, &cb)).to_vec()
     }
@@ -666,9 +673,7 @@ mod tests {
             1,
         );
         assert_eq!(small_f(&long, &other), None);
-        let (pa, pb) = [&long, &other]
-            .map(|b| placed_quadric(b, &[Rat::zero(), Rat::one()]).unwrap())
-            .into();
+        let (pa, pb) = placed_pair(&long, &other);
         let (sa, sb) = (
             pa.centred::<SmallInt>().unwrap(),
             pb.centred::<SmallInt>().unwrap(),
@@ -706,15 +711,13 @@ mod tests {
             if let Some(small) = small_f(&a, &b) {
                 proptest::prop_assert_eq!(small, exact);
             }
-            let span = [Rat::zero(), Rat::one()];
-            let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
+            let (pa, pb) = placed_pair(&a, &b);
             let (sa, sb) = (pa.centred::<SmallInt>().unwrap(), pb.centred::<SmallInt>().unwrap());
             let (ia, ib) = (pa.centred::<Int>().unwrap(), pb.centred::<Int>().unwrap());
             if let Some(lifted) = Offset::new(&sa, &sb).lifted() {
                 proptest::prop_assert_eq!(lifted, Offset::new(&ia, &ib));
             }
-            for body in [&a, &b] {
-                let p = placed_quadric(body, &span).unwrap();
+            for p in [&pa, &pb] {
                 let (small, int) = (p.centred::<SmallInt>().unwrap(), p.centred::<Int>().unwrap());
                 if let Some(lifted) = small.lifted() {
                     let (l, i) = (&lifted.block, &int.block);
@@ -732,42 +735,6 @@ mod tests {
     // degenerate cases the generators above do not reach.
     use crate::curve::Integer;
     use ccd_arith::Ring;
-
-    /// A body with the given orientation/radii and centre motion.
-    fn body_of(radii: [Rat; 3], q: [Rat; 4], pts: Vec<[Rat; 3]>) -> Body {
-        let mut q = q;
-        if q.iter().all(Rat::is_zero) {
-            q[0] = Rat::one();
-        }
-        let motion = if pts.len() == 1 {
-            Motion::Static {
-                center: pts[0].clone(),
-                orientation: q,
-            }
-        } else {
-            Motion::Translation {
-                center: Bezier {
-                    points: pts,
-                    weights: None,
-                },
-                orientation: q,
-            }
-        };
-        Body { radii, motion }
-    }
-
-    fn general_and_centred(a: &Body, b: &Body) -> (CharPoly, CharPoly) {
-        let span = [Rat::zero(), Rat::one()];
-        let (pa, pb) = (
-            placed_quadric(a, &span).unwrap(),
-            placed_quadric(b, &span).unwrap(),
-        );
-        assert!(!pa.turns() && !pb.turns());
-        let general = CharPoly {
-            coeffs: normalise(ccd_quadric::characteristic(&pa.quadric(), &pb.quadric())),
-        };
-        (CharPoly::from_placed(&pa, &pb), general)
-    }
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
@@ -955,17 +922,12 @@ mod tests {
             [rat(1, 1), rat(1, 1), rat(0, 1), rat(0, 1)],
             vec![[rat(3, 1), rat(0, 1), rat(0, 1)]],
         );
-        let span = [Rat::zero(), Rat::one()];
-        let (pa, pb) = (
-            placed_quadric(&a, &span).unwrap(),
-            placed_quadric(&b, &span).unwrap(),
-        );
+        let (pa, _) = placed_pair(&a, &b);
         let sa = pa.centred::<SmallInt>().unwrap();
         assert!(sa.lifted().is_none(), "degree 20 does not fit SmallPoly");
         let (c, g) = general_and_centred(&a, &b);
         assert_eq!(c, g);
         let (c, g) = general_and_centred(&b, &a);
         assert_eq!(c, g);
-        drop(pb);
     }
 }

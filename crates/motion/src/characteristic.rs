@@ -238,16 +238,16 @@ const SMALL_BODY_BITS: u64 = 80;
 /// same polynomials); `None` if a body turns or has a rational centre
 /// curve.
 fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
+    let over_int = || {
+        let (ia, ib) = (a.centred::<Int>()?, b.centred::<Int>()?);
+        let f = centred_characteristic(&ia.block, &ib.block, &Offset::new(&ia, &ib));
+        Some(Quartic::Exact(f))
+    };
     // Placements of longer numbers never give bodies that fit i128 (on the
     // shipped scenes: every one up to 65 bits fits, none from 87 bits on),
     // and a doomed attempt costs a fifth of the set-up.
     if a.bits().max(b.bits()) > SMALL_BODY_BITS {
-        let (ia, ib) = (a.centred::<Int>()?, b.centred::<Int>()?);
-        return Some(Quartic::Exact(centred_characteristic(
-            &ia.block,
-            &ib.block,
-            &Offset::new(&ia, &ib),
-        )));
+        return over_int();
     }
     // The bodies themselves are short numbers even when f is not.
     let (sa, sb) = (a.centred::<SmallInt>()?, b.centred::<SmallInt>()?);
@@ -259,19 +259,20 @@ fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
             return Some(Quartic::Small(f));
         }
     }
-    // Over Int: only the blocks and the short numbers are needed there.
-    let lifted = (offset.lifted(), sa.block.lifted(), sb.block.lifted());
-    let (offset, ba, bb) = match lifted {
-        (Some(offset), Some(ba), Some(bb)) => (offset, ba, bb),
-        _ => {
-            let (ia, ib) = match (sa.lifted(), sb.lifted()) {
-                (Some(ia), Some(ib)) => (ia, ib),
-                _ => (a.centred::<Int>()?, b.centred::<Int>()?),
-            };
-            (Offset::new(&ia, &ib), ia.block, ib.block)
-        }
+    // Over Int: only the blocks and the short numbers are needed there;
+    // the short numbers lifted, or formed over Int from the lifted bodies
+    // (the three-decimal straight-line scenes), else everything over Int.
+    let int_offset = || {
+        offset
+            .lifted()
+            .or_else(|| Some(Offset::new(&sa.lifted()?, &sb.lifted()?)))
     };
-    Some(Quartic::Exact(centred_characteristic(&ba, &bb, &offset)))
+    match (sa.block.lifted(), sb.block.lifted(), int_offset()) {
+        (Some(ba), Some(bb), Some(offset)) => {
+            Some(Quartic::Exact(centred_characteristic(&ba, &bb, &offset)))
+        }
+        _ => over_int(),
+    }
 }
 
 /// `f = det(λA + B)` from one of the two routes of

@@ -70,6 +70,23 @@ impl Rat {
     /// the common level `k`, the multiple of the largest `2^s` in
     /// `[L·2^(k−kl), H·2^(k−kh)]`, found by shifts only.
     fn dyadic_in_dyadic(lo: &Rat, kl: u64, hi: &Rat, kh: u64) -> Rat {
+        // As 0 <= l − 1 < h, the level is the highest bit where h and
+        // l − 1 differ.
+        Rat::dyadic_in_dyadic_by(lo, kl, hi, kh, |h, below| {
+            h.highest_differing_bit(below)
+                .expect("h > l − 1 differ somewhere")
+        })
+    }
+    /// [`Rat::dyadic_in_dyadic`] with the level `s` found by `level(h, l − 1)`:
+    /// the largest `s` with `⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋` for `0 < l <= h`.
+    #[inline]
+    fn dyadic_in_dyadic_by(
+        lo: &Rat,
+        kl: u64,
+        hi: &Rat,
+        kh: u64,
+        level: impl FnOnce(&Int, &Int) -> u64,
+    ) -> Rat {
         let k = kl.max(kh);
         let (l, h) = (lo.num.shl(k - kl), hi.num.shl(k - kh));
         if l.signum() <= 0 && h.signum() >= 0 {
@@ -82,12 +99,8 @@ impl Rat {
         } else {
             (l, h, false)
         };
-        // 0 < l <= h: the largest s with ⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋, i.e.
-        // (as 0 <= l − 1 < h) the highest bit where h and l − 1 differ.
         let below = &l - &Int::one();
-        let good = h
-            .highest_differing_bit(&below)
-            .expect("h > l − 1 differ somewhere");
+        let good = level(&h, &below);
         if good >= k {
             // Integers inside: the least one, as the search below picks.
             return Rat::from_int(-(-&lo.num).shr_floor(kl));
@@ -180,31 +193,18 @@ mod tests {
     /// comparison: bisection for the largest `s` with
     /// `⌊h/2^s⌋ > ⌊(l − 1)/2^s⌋`, then the same point.
     fn dyadic_in_dyadic_bisection(lo: &Rat, kl: u64, hi: &Rat, kh: u64) -> Rat {
-        let k = kl.max(kh);
-        let (l, h) = (lo.num.shl(k - kl), hi.num.shl(k - kh));
-        if l.signum() <= 0 && h.signum() >= 0 {
-            return Rat::zero();
-        }
-        let (l, h, negative) = if h.is_negative() {
-            (-h, -l, true)
-        } else {
-            (l, h, false)
-        };
-        let below = &l - &Int::one();
-        let (mut good, mut bad) = (0u64, h.bits() + 1);
-        while bad - good > 1 {
-            let mid = good + (bad - good) / 2;
-            if h.shr_floor(mid) > below.shr_floor(mid) {
-                good = mid;
-            } else {
-                bad = mid;
+        Rat::dyadic_in_dyadic_by(lo, kl, hi, kh, |h, below| {
+            let (mut good, mut bad) = (0u64, h.bits() + 1);
+            while bad - good > 1 {
+                let mid = good + (bad - good) / 2;
+                if h.shr_floor(mid) > below.shr_floor(mid) {
+                    good = mid;
+                } else {
+                    bad = mid;
+                }
             }
-        }
-        if good >= k {
-            return Rat::from_int(-(-&lo.num).shr_floor(kl));
-        }
-        let m = h.shr_floor(good).shl(good);
-        Rat::dyadic(if negative { -m } else { m }, k)
+            good
+        })
     }
 
     /// A dyadic with a numerator of up to four 64-bit digits.
