@@ -12,185 +12,12 @@
 //! marks an exact value (small constants): no rounding at all; a binary
 //! operation works at the larger precision of its operands.
 
+pub use ccd_arith::Dyadic;
 use ccd_arith::{Int, Rat, RingOps};
 use std::cmp::Ordering;
 
 /// Precision used for divisions of exact (`prec == 0`) operands.
 const DEFAULT_DIVISION_BITS: u32 = 64;
-
-/// The dyadic rational `m · 2^e`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Dyadic {
-    /// Mantissa.
-    pub m: Int,
-    /// Binary exponent.
-    pub e: i64,
-}
-
-impl Dyadic {
-    /// Zero.
-    pub fn zero() -> Dyadic {
-        Dyadic {
-            m: Int::zero(),
-            e: 0,
-        }
-    }
-    /// The integer `k`.
-    pub fn from_int(k: &Int) -> Dyadic {
-        Dyadic { m: k.clone(), e: 0 }
-    }
-    /// The exact rational value.
-    pub fn to_rat(&self) -> Rat {
-        Rat::from_int(self.m.clone()).mul_pow2(self.e)
-    }
-    /// The exact value of a finite `f64`, `None` otherwise.
-    pub fn from_f64(x: f64) -> Option<Dyadic> {
-        let r = Rat::from_f64_exact(x)?;
-        Dyadic::from_rat_exact(&r)
-    }
-    /// The value of a rational with a power-of-two denominator.
-    pub fn from_rat_exact(r: &Rat) -> Option<Dyadic> {
-        let den = r.denom();
-        let tz = den.trailing_zeros()?;
-        if den.bits() != tz + 1 {
-            return None;
-        }
-        Some(Dyadic {
-            m: r.numer().clone(),
-            e: -(tz as i64),
-        })
-    }
-    /// A nearby `f64` (not certified).
-    pub fn to_f64(&self) -> f64 {
-        let (mm, ee) = self.m.top_bits();
-        let scale = self.e + ee as i64;
-        let v = (mm as f64) * 2f64.powi(scale.clamp(-1100, 1100) as i32);
-        if self.m.is_negative() {
-            -v
-        } else {
-            v
-        }
-    }
-    fn signum(&self) -> i32 {
-        self.m.signum()
-    }
-    /// `self + o` (`sign == 1`) or `self − o` (`sign == −1`), exact: the
-    /// mantissas over the common exponent `min(e)` (a zero operand gives
-    /// the other one, with its exponent). Only the operand with the larger
-    /// exponent is shifted; the other is added in place.
-    fn add_signed(&self, o: &Dyadic, sign: i32) -> Dyadic {
-        let sub = sign < 0;
-        if self.m.is_zero() {
-            let m = if sub { -&o.m } else { o.m.clone() };
-            return Dyadic { m, e: o.e };
-        }
-        if o.m.is_zero() {
-            return self.clone();
-        }
-        let m = match self.e.cmp(&o.e) {
-            Ordering::Equal if sub => &self.m - &o.m,
-            Ordering::Equal => &self.m + &o.m,
-            Ordering::Greater => {
-                let mut m = self.m.shl((self.e - o.e) as u64);
-                if sub {
-                    m -= &o.m;
-                } else {
-                    m += &o.m;
-                }
-                m
-            }
-            Ordering::Less => {
-                let mut m = o.m.shl((o.e - self.e) as u64);
-                if sub {
-                    m = -m;
-                }
-                m += &self.m;
-                m
-            }
-        };
-        Dyadic {
-            m,
-            e: self.e.min(o.e),
-        }
-    }
-    fn add(&self, o: &Dyadic) -> Dyadic {
-        self.add_signed(o, 1)
-    }
-    fn sub(&self, o: &Dyadic) -> Dyadic {
-        self.add_signed(o, -1)
-    }
-    fn mul(&self, o: &Dyadic) -> Dyadic {
-        Dyadic {
-            m: &self.m * &o.m,
-            e: self.e + o.e,
-        }
-    }
-    fn neg(&self) -> Dyadic {
-        Dyadic {
-            m: -&self.m,
-            e: self.e,
-        }
-    }
-    /// The order of the values: signs first, then, for equal non-zero
-    /// signs, the magnitudes (reversed when negative).
-    fn cmp(&self, o: &Dyadic) -> Ordering {
-        let (a, b) = (self.signum(), o.signum());
-        if a != b || a == 0 {
-            return a.cmp(&b);
-        }
-        let magnitude = self.m.cmp_abs_scaled(self.e, &o.m, o.e);
-        if a > 0 {
-            magnitude
-        } else {
-            magnitude.reverse()
-        }
-    }
-    /// Rounded to `prec` significant bits, down (`up == false`) or up:
-    /// `⌊m·2^(−s)⌋·2^(e+s)` (resp. `⌈⌉`) with `s = bits(m) − prec`
-    /// ([`Int::shr_round`]).
-    fn round(self, prec: u32, up: bool) -> Dyadic {
-        if prec == 0 {
-            return self;
-        }
-        let bits = self.m.bits();
-        if bits <= prec as u64 {
-            return self;
-        }
-        let s = bits - prec as u64;
-        Dyadic {
-            m: self.m.shr_round(s, up),
-            e: self.e + s as i64,
-        }
-    }
-    /// `⌊n·2^s / d⌋·2^(−s)` (down) or with `⌈⌉` (up), for `d ≠ 0`: one
-    /// truncated division, the quotient stepped by one when the remainder
-    /// is not zero and its sign (the dividend's) says the truncation went
-    /// the wrong way (up for `⌊⌋` when it differs from the divisor's, down
-    /// for `⌈⌉` when it agrees).
-    fn quotient(n: &Int, d: &Int, s: i64, up: bool) -> Dyadic {
-        let (q, r) = if s >= 0 {
-            n.shl(s as u64).div_rem_trunc(d)
-        } else {
-            n.div_rem_trunc(&d.shl(s.unsigned_abs()))
-        };
-        let m = match (r.signum() * d.signum(), up) {
-            (1, true) => q + Int::one(),
-            (-1, false) => q - Int::one(),
-            _ => q,
-        };
-        Dyadic { m, e: -s }
-    }
-    /// An outward rounding of `a / b` (`b ≠ 0`) to about `prec` bits.
-    fn div(a: &Dyadic, b: &Dyadic, prec: u32, up: bool) -> Dyadic {
-        let s = prec as i64 + 2 + b.m.bits() as i64 - a.m.bits() as i64;
-        let q = Dyadic::quotient(&a.m, &b.m, s, up);
-        Dyadic {
-            m: q.m,
-            e: q.e + a.e - b.e,
-        }
-        .round(prec, up)
-    }
-}
 
 /// A closed interval `[lo, hi]` with dyadic ends kept to `prec` significant
 /// bits by outward rounding (`prec == 0`: exact, never rounded).
@@ -205,14 +32,14 @@ pub struct BigInterval {
 }
 
 fn min_d(a: Dyadic, b: Dyadic) -> Dyadic {
-    if a.cmp(&b) == Ordering::Greater {
+    if a.cmp_value(&b) == Ordering::Greater {
         b
     } else {
         a
     }
 }
 fn max_d(a: Dyadic, b: Dyadic) -> Dyadic {
-    if a.cmp(&b) == Ordering::Less {
+    if a.cmp_value(&b) == Ordering::Less {
         b
     } else {
         a
@@ -318,7 +145,7 @@ impl BigInterval {
     pub fn intersect(&self, o: &BigInterval) -> Option<BigInterval> {
         let lo = max_d(self.lo.clone(), o.lo.clone());
         let hi = min_d(self.hi.clone(), o.hi.clone());
-        (lo.cmp(&hi) != Ordering::Greater).then(|| BigInterval {
+        (lo.cmp_value(&hi) != Ordering::Greater).then(|| BigInterval {
             lo,
             hi,
             prec: self.prec.max(o.prec),
@@ -326,7 +153,7 @@ impl BigInterval {
     }
     /// `self ⊂ interior(o)`.
     pub fn strictly_inside(&self, o: &BigInterval) -> bool {
-        self.lo.cmp(&o.lo) == Ordering::Greater && self.hi.cmp(&o.hi) == Ordering::Less
+        self.lo.cmp_value(&o.lo) == Ordering::Greater && self.hi.cmp_value(&o.hi) == Ordering::Less
     }
     /// The exact midpoint (never rounded, so it always lies in the
     /// interval, as interval Newton requires), as a point carrying this
@@ -434,7 +261,7 @@ fn product_candidates(a: &BigInterval, b: &BigInterval) -> [bool; 4] {
     if b.lo == b.hi {
         return [true, false, true, false];
     }
-    let (oa, ob) = (a.lo.cmp(&a.hi), b.lo.cmp(&b.hi));
+    let (oa, ob) = (a.lo.cmp_value(&a.hi), b.lo.cmp_value(&b.hi));
     if oa == Ordering::Greater || ob == Ordering::Greater {
         return [true; 4];
     }
@@ -472,7 +299,7 @@ fn first_extremes(mut c: [Option<Dyadic>; 4]) -> (Dyadic, Dyadic) {
     for i in 0..c.len() {
         let Some(x) = &c[i] else { continue };
         let beats = |best: Option<usize>, wanted: Ordering| match best.and_then(|b| c[b].as_ref()) {
-            Some(b) => b.cmp(x) == wanted.reverse(),
+            Some(b) => b.cmp_value(x) == wanted.reverse(),
             None => true,
         };
         if beats(lo, Ordering::Less) {
@@ -831,8 +658,8 @@ mod tests {
         /// the same mantissa and exponent, not only the same value.
         #[test]
         fn operations_match_the_reference_digit_for_digit(a in interval(), b in interval(), p in 2u32..600) {
-            prop_assert_eq!(a.lo.cmp(&b.lo), reference::cmp(&a.lo, &b.lo));
-            prop_assert_eq!(a.lo.cmp(&a.hi), reference::cmp(&a.lo, &a.hi));
+            prop_assert_eq!(a.lo.cmp_value(&b.lo), reference::cmp(&a.lo, &b.lo));
+            prop_assert_eq!(a.lo.cmp_value(&a.hi), reference::cmp(&a.lo, &a.hi));
             prop_assert_eq!(a.times(&b), reference::times(&a, &b));
             prop_assert_eq!(b.times(&a), reference::times(&b, &a));
             prop_assert_eq!(a.times(&a), reference::times(&a, &a));
