@@ -158,6 +158,18 @@ impl FilterBernstein {
         self.signs().all(|s| s.is_some())
     }
 
+    /// The certified sign of every second difference
+    /// `b_{i+2} − 2·b_{i+1} + b_i` (`None` where undecided): outward-rounded
+    /// intervals `b̃_i ± e_i` combined.
+    pub(crate) fn second_difference_signs(&self) -> impl Iterator<Item = Option<i32>> + '_ {
+        let at =
+            |i: usize| Interval::point(self.coeffs[i]) + Interval::new(-self.errs[i], self.errs[i]);
+        (0..self.coeffs.len().saturating_sub(2)).map(move |i| {
+            let m = at(i + 1);
+            (at(i + 2) - (m + m) + at(i)).sign()
+        })
+    }
+
     /// The certified sign at the node's right end (its last coefficient).
     pub(crate) fn sign_at_hi(&self) -> Option<i32> {
         self.sign(self.coeffs.len() - 1)
@@ -248,6 +260,42 @@ mod tests {
         // Exact halves: left [4, -1/2, -1/4]·..., check signs only.
         assert_eq!(l.signs().collect::<Option<Vec<_>>>(), Some(vec![1, -1, -1]));
         assert_eq!(r.signs().collect::<Option<Vec<_>>>(), Some(vec![-1, -1, 1]));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(128))]
+        /// Every second-difference sign the filter proves is the exact
+        /// one, on coefficients long enough to be rounded (and after a
+        /// split, whose errors it must carry).
+        #[test]
+        fn second_difference_signs_are_exact_ones(
+            raw in proptest::collection::vec(-1000i64..1000, 3..12),
+            big in 0u32..300,
+        ) {
+            let scale = Int::from(3).pow(big);
+            let c: Vec<Int> = raw.iter().map(|&x| &scale * &Int::from(x) + Int::from(x % 7)).collect();
+            let exact = |c: &[Int]| -> Vec<i32> {
+                (0..c.len() - 2).map(|i| (&(&c[i + 2] - &c[i + 1]) - &(&c[i + 1] - &c[i])).signum()).collect()
+            };
+            let fb = FilterBernstein::from_exact(&c, 1);
+            for (got, want) in fb.second_difference_signs().zip(exact(&c)) {
+                proptest::prop_assert!(got.is_none_or(|g| g == want));
+            }
+            // The left half, exactly: de Casteljau's first entries, doubled
+            // per level (the common factor 2^n keeps every sign).
+            let mut level = c.clone();
+            let mut left = vec![level[0].shl(c.len() as u64 - 1)];
+            let mut scale2 = 0u64;
+            while level.len() > 1 {
+                level = level.windows(2).map(|w| &w[0] + &w[1]).collect();
+                scale2 += 1;
+                left.push(level[0].shl(c.len() as u64 - 1 - scale2));
+            }
+            let (l, _) = fb.split_half();
+            for (got, want) in l.second_difference_signs().zip(exact(&left)) {
+                proptest::prop_assert!(got.is_none_or(|g| g == want));
+            }
+        }
     }
 
     #[test]

@@ -24,7 +24,7 @@
 use crate::filter_bernstein::FilterBernstein;
 use crate::model::{SignModel, SignProbe};
 use crate::root::RealRoot;
-use ccd_arith::{Int, Interval, Rat};
+use ccd_arith::{Dyadic, Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
@@ -158,6 +158,34 @@ impl Node {
         }
     }
 
+    /// The sign `s` shared by every second difference of the coefficients,
+    /// when each is proven nonzero: then `s·p″ > 0` on the whole node (the
+    /// Bernstein coefficients of `p″` are `n(n − 1)/w²` times them, and a
+    /// Bernstein polynomial lies in the hull of its coefficients).
+    fn convexity(&self) -> Option<i32> {
+        let mut all = None;
+        let mut agree = |d: Option<i32>| match (d, all) {
+            (Some(d), None) if d != 0 => {
+                all = Some(d);
+                true
+            }
+            (Some(d), Some(s)) => d == s,
+            _ => false,
+        };
+        let alike = match &self.coeffs {
+            Coeffs::Filter(f) => f.second_difference_signs().all(&mut agree),
+            Coeffs::Exact(b) => {
+                let c = b.coeffs();
+                (0..c.len().saturating_sub(2)).all(|i| {
+                    agree(Some(
+                        (&(&c[i + 2] - &c[i + 1]) - &(&c[i + 1] - &c[i])).signum(),
+                    ))
+                })
+            }
+        };
+        all.filter(|_| alike)
+    }
+
     /// Halves the node; returns the children and the sign of `p` at the
     /// split point when the coefficients prove it. The children of an exact
     /// node go back to the float form only if `float`.
@@ -221,6 +249,11 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// this polynomial (coefficients beyond `f64`'s range, say) and the
     /// children of exact nodes stay exact.
     float_failures: u32,
+    /// Points where [`RootIter::convex_exclusion`] found `p` zero or of
+    /// the sign opposite to the ends of a node, with the sign there: a
+    /// node around one with ends of another sign holds roots, and is not
+    /// tested again.
+    witnesses: Vec<(Rat, i32)>,
     /// Exact work done so far, in word operations ([`exact_work`]); the
     /// isolation stops once it passes `max_work` ([`RootIter::exhausted`]).
     work: u64,
@@ -250,6 +283,25 @@ fn end_bits(b: &Bernstein) -> u64 {
         .map(|r| r.numer().bits().max(r.denom().bits()))
         .max()
         .unwrap_or(0)
+}
+
+/// The finest grid (in bits past the node's ends) on which
+/// [`RootIter::convex_exclusion`] evaluates before it gives up: a near
+/// miss by about `2^(−500)` of the node is the closest it settles.
+const EXCLUSION_BITS: u64 = 1024;
+/// The rounds of [`RootIter::convex_exclusion`] (two exact jets each)
+/// before it gives up.
+const EXCLUSION_ROUNDS: usize = 16;
+
+/// What [`RootIter::convex_exclusion`] found.
+enum Exclusion {
+    /// The node holds no root.
+    RootFree,
+    /// A point of the node where `p` is zero or has the sign opposite to
+    /// its ends', and the sign of `p` there: the node holds roots.
+    Witness(Rat, i32),
+    /// Neither within the test's budget.
+    Open,
 }
 
 /// See [`RootIter::float_failures`].
@@ -295,6 +347,7 @@ impl RootIter<Arc<SignProbe>> {
             undecided: false,
             budget: 0,
             float_failures: 0,
+            witnesses: Vec::new(),
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -331,6 +384,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             undecided,
             budget: 2 * coeffs.len() + 16,
             float_failures: 0,
+            witnesses: Vec::new(),
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -477,6 +531,133 @@ impl<M: SignModel + Clone> RootIter<M> {
         ))
     }
 
+    /// A second-order exclusion test for a node whose coefficients are
+    /// convex: with `g = s·σ·p`, `s` the sign of `p` at both ends and of
+    /// every second difference ([`Node::convexity`]), `g″ > 0` on the node,
+    /// so each tangent of `g` is a lower bound of `g` there. Between
+    /// points `a < b` with `g(a), g(b) > 0` and `g′(a) < 0 < g′(b)`, the
+    /// larger of the two tangents is at least its value `v` where they
+    /// cross, and outside `[a, b]` `g` is monotone away from them; `v > 0`
+    /// proves the node root-free. `a` and `b` close in on the minimum of
+    /// `g` by secant steps on `g′` (exact jets at dyadic points, the
+    /// precision doubling each round), one point on each side of it. A
+    /// pair of complex roots at distance `ε` from the axis (a near miss)
+    /// needs about `log₂(1/ε)` bits, and a handful of rounds instead of the
+    /// bisections or Newton zooms that Descartes' rule needs to see them
+    /// apart (those shrink the node to the width `ε`). `false` when a
+    /// point with `g ≤ 0` turns up (real roots), the node's ends are not
+    /// dyadic, or the precision bound [`EXCLUSION_BITS`] is reached: the
+    /// node is then subdivided as before. Every step is exact, so a `true`
+    /// is a proof.
+    fn convex_exclusion(&self, node: &Node, s: i32) -> Exclusion {
+        let (Some(lo), Some(hi)) = (
+            Dyadic::from_rat_exact(&node.lo),
+            Dyadic::from_rat_exact(&node.hi),
+        ) else {
+            return Exclusion::Open;
+        };
+        let base_bits = (-lo.e).max(-hi.e).max(0) as u64;
+        // (x, g(x), g′(x)), exactly.
+        let point = |x: Dyadic| {
+            let j = self.base.exact_jet_at(&x.to_rat());
+            let g = Dyadic {
+                m: j.value,
+                e: -j.value_exp,
+            };
+            let d = Dyadic {
+                m: j.slope,
+                e: -j.slope_exp,
+            };
+            if s < 0 {
+                (x, g.neg(), d.neg())
+            } else {
+                (x, g, d)
+            }
+        };
+        let (mut a, mut b) = (point(lo), point(hi));
+        if a.1.signum() <= 0 || b.1.signum() <= 0 {
+            return Exclusion::Open;
+        }
+        // g monotone on the node: its smaller end value is its minimum.
+        if a.2.signum() >= 0 || b.2.signum() <= 0 {
+            return Exclusion::RootFree;
+        }
+        // ⌊(num/den)·2^k⌋·2^(−k), for den > 0.
+        let on_grid = |num: &Dyadic, den: &Dyadic, k: u64| Dyadic {
+            m: Dyadic::quotient(&num.m, &den.m, num.e - den.e + k as i64, false).m,
+            e: -(k as i64),
+        };
+        let inside =
+            |x: &Dyadic, a: &Dyadic, b: &Dyadic| x.cmp_value(a).is_gt() && x.cmp_value(b).is_lt();
+        for _ in 0..EXCLUSION_ROUNDS {
+            // The value v where the tangents at a and b cross, times
+            // g′(b) − g′(a) > 0: g(a)·rise + g′(a)·(g(a) − g(b) + g′(b)·w).
+            let w = b.0.sub(&a.0);
+            let rise = b.2.sub(&a.2);
+            let v =
+                a.1.mul(&rise)
+                    .add(&a.2.mul(&a.1.sub(&b.1).add(&b.2.mul(&w))));
+            if v.signum() > 0 {
+                return Exclusion::RootFree;
+            }
+            // The grid: twice the bits of the bracket's width (a secant
+            // step squares the error), past the node's own.
+            let log_w = -(w.m.bits() as i64 + w.e);
+            let k = (2 * log_w.max(0) as u64 + 8).max(base_bits + 8);
+            if k > base_bits + EXCLUSION_BITS {
+                return Exclusion::Open;
+            }
+            // The secant root of g′ on [a, b], on the grid.
+            let mut x = a.0.add(&on_grid(&a.2.neg().mul(&w), &rise, k));
+            if !inside(&x, &a.0, &b.0) {
+                let sum = a.0.add(&b.0);
+                x = Dyadic {
+                    m: sum.m,
+                    e: sum.e - 1,
+                };
+            }
+            let x = point(x);
+            if x.1.signum() <= 0 {
+                return Exclusion::Witness(x.0.to_rat(), s * x.1.signum());
+            }
+            let side = x.2.signum();
+            if side == 0 {
+                return Exclusion::RootFree;
+            }
+            // A point past the minimum: more than twice its distance from
+            // x as the bracket's slope of g′ estimates it.
+            let mut step = on_grid(
+                &x.2.mul(&w)
+                    .mul(&Dyadic::from_int(&Int::from(2 * side as i64))),
+                &rise,
+                k,
+            );
+            step.m += Int::one();
+            let y = if side < 0 {
+                x.0.add(&step)
+            } else {
+                x.0.sub(&step)
+            };
+            if side < 0 {
+                a = x;
+            } else {
+                b = x;
+            }
+            if inside(&y, &a.0, &b.0) {
+                let y = point(y);
+                if y.1.signum() <= 0 {
+                    return Exclusion::Witness(y.0.to_rat(), s * y.1.signum());
+                }
+                match y.2.signum() {
+                    0 => return Exclusion::RootFree,
+                    d if d < 0 => a = y,
+                    _ => b = y,
+                }
+            }
+        }
+        Exclusion::Open
+    }
+
     /// Ends a filter-only isolation as undecided.
     fn give_up(&mut self) -> Option<RealRoot<M>> {
         self.undecided = true;
@@ -544,7 +725,25 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                 0
             };
             node.cluster.var = var;
+            // A cluster that Descartes' rule has not resolved for a streak
+            // of generations (exact isolation only: a filter-only one may
+            // see a multiple root, where the convexity test never ends):
+            // first the convexity test, which settles a near miss (no real
+            // root) at once, unless a witness already shows roots; then a
+            // Newton zoom.
             if !self.filter_only && var >= 2 && node.cluster.streak >= ZOOM_STREAK {
+                let shown = |(x, sign): &(Rat, i32)| *sign != first && node.lo < *x && *x < node.hi;
+                if first == last
+                    && first != 0
+                    && !self.witnesses.iter().any(shown)
+                    && node.convexity() == Some(first)
+                {
+                    match self.convex_exclusion(&node, first) {
+                        Exclusion::RootFree => continue,
+                        Exclusion::Witness(x, sign) => self.witnesses.push((x, sign)),
+                        Exclusion::Open => {}
+                    }
+                }
                 if let Some(zoomed) = self.zoom(&mut node, var) {
                     self.stack.push(Item::Node(zoomed));
                     continue;
@@ -558,7 +757,89 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 
 #[cfg(test)]
 mod tests {
-    use super::SignSummary;
+    use super::{Exclusion, Node, RootIter, SignSummary};
+    use crate::model::SignProbe;
+    use ccd_arith::{Int, Rat};
+    use ccd_poly::ZPoly;
+    use proptest::prelude::*;
+
+    /// [`RootIter::convex_exclusion`] on the node `[lo, hi]` of `p`, when
+    /// its preconditions hold (ends of one sign, convex coefficients).
+    fn exclusion(p: &ZPoly, lo: &Rat, hi: &Rat) -> Option<(Exclusion, i32)> {
+        let iter = RootIter::new(SignProbe::shared(p.clone()), lo, hi);
+        let node = Node::exact(p, lo.clone(), hi.clone(), 0);
+        let SignSummary { first, last, .. } = node.signs()?;
+        (first == last && first != 0 && node.convexity() == Some(first))
+            .then(|| (iter.convex_exclusion(&node, first), first))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+        /// A near miss (a complex pair `a ± 2^(−k)·i`) or a near hit (real
+        /// roots `a ± 2^(−k)`) inside a dyadic node, times a linear factor
+        /// with a root anywhere: "root-free" only when no root is in the
+        /// node, a witness only inside it with the sign it claims (checked
+        /// exactly), and within the test's reach (`k` up to 400 bits past
+        /// the node) the near miss is settled and the near hit shown.
+        #[test]
+        fn convexity_test_is_sound_and_reaches_near_misses(
+            n in 1i64..50, d in 2i64..51, k in 12u64..400, j in 4u64..9,
+            hit in any::<bool>(), r in (-40i64..80, 1i64..40),
+        ) {
+            prop_assume!(n < d);
+            let a = Rat::from_frac(n, d);
+            // 2^(2k)·(d·t − n)² ± d²: roots (or complex roots) a ± 2^(−k)·(i).
+            let two_k = Int::one().shl(2 * k);
+            let (n, d) = (a.numer().clone(), a.denom().clone());
+            let sq = ZPoly::new(vec![&(&n * &n) * &two_k, -&(&(&n * &d) * &two_k.shl(1)), &(&d * &d) * &two_k]);
+            let dd = ZPoly::new(vec![&d * &d]);
+            let cluster = if hit { &sq - &dd } else { &sq + &dd };
+            let root = Rat::from_frac(r.0, r.1);
+            let p = &cluster * &ZPoly::new(vec![-root.numer().clone(), root.denom().clone()]);
+            // The dyadic node of width 2^(−j) around a, if the cluster fits.
+            let lo = Rat::dyadic(a.mul_pow2(j as i64).floor(), j);
+            let hi = &lo + &Rat::dyadic(Int::one(), j);
+            let eps = Rat::dyadic(Int::one(), k);
+            prop_assume!(lo < &a - &eps && &a + &eps < hi);
+            let Some((found, s)) = exclusion(&p, &lo, &hi) else {
+                return Ok(());
+            };
+            let inside = |x: &Rat| &lo <= x && x <= &hi;
+            let real_in = (hit && inside(&a)) || inside(&root);
+            match &found {
+                Exclusion::RootFree => prop_assert!(!real_in, "root-free with a root inside"),
+                &Exclusion::Witness(ref x, sign) => {
+                    prop_assert!(&lo < x && x < &hi);
+                    prop_assert_eq!(p.sign_at(x), sign);
+                    prop_assert!(sign != s);
+                }
+                Exclusion::Open => {}
+            }
+            if k <= 400 && !inside(&root) {
+                if hit {
+                    prop_assert!(matches!(found, Exclusion::Witness(..)), "near hit not shown");
+                } else {
+                    prop_assert!(matches!(found, Exclusion::RootFree), "near miss not settled");
+                }
+            }
+        }
+    }
+
+    /// A miss closer than the test reaches stays open (the isolation then
+    /// zooms, as `clusters_far_below_bisection_depth` checks).
+    #[test]
+    fn a_miss_beyond_reach_stays_open() {
+        // 2^(2·1500)·(3t − 1)² + 9: complex roots 1/3 ± 2^(−1500)·i.
+        let two_k = Int::one().shl(3000);
+        let p = ZPoly::new(vec![
+            &two_k + &Int::from(9),
+            -&(&two_k * &Int::from(6)),
+            &two_k * &Int::from(9),
+        ]);
+        let (lo, hi) = (Rat::from_frac(1, 4), Rat::from_frac(3, 8));
+        let (found, _) = exclusion(&p, &lo, &hi).expect("convex");
+        assert!(matches!(found, Exclusion::Open));
+    }
 
     fn summary(signs: &[i32]) -> Option<SignSummary> {
         SignSummary::of(signs.iter().map(|&s| Some(s)))
