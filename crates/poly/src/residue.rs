@@ -85,6 +85,21 @@ impl Residues {
             && gcd_mod_p(self.0.clone(), other.0.clone(), &FIELD).len() == 1
     }
 
+    /// The derivative: the image of `P′` (reduction commutes with it).
+    pub fn derivative(&self) -> Residues {
+        let f = &*FIELD;
+        let c = self.0.iter().enumerate().skip(1);
+        Residues::trimmed(c.map(|(i, &x)| f.mul(x, f.enter(i as u64 % f.p))).collect())
+    }
+
+    /// Whether `self = P mod p`, of `P`'s degree (the caller's check that
+    /// `p ∤ lc(P)`), proves `P` squarefree: `gcd(P, P′) = 1` over `ℚ` by
+    /// [`Residues::proves_coprime`] (a constant `P` is not proven). `false`
+    /// means "not proven".
+    pub fn proves_squarefree(&self) -> bool {
+        self.proves_coprime(&self.derivative())
+    }
+
     /// Coefficientwise `op`.
     fn zip(&self, o: &Residues, op: impl Fn(&Fp, u64, u64) -> u64) -> Residues {
         let f = &*FIELD;
@@ -150,6 +165,28 @@ mod tests {
 
     fn poly(c: &[i64]) -> ZPoly {
         ZPoly::from_i64s(c)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The image of the derivative is the derivative of the image, and
+        /// a squarefree proof only for a squarefree polynomial (a square
+        /// factor is never proven; a product of distinct linear factors
+        /// whose leading coefficient the prime does not divide always is).
+        #[test]
+        fn derivative_and_squarefree_proofs(
+            c in proptest::collection::vec(-10_000i64..10_000, 1..9),
+            roots in proptest::collection::btree_set(-50i64..50, 1..6),
+            twice in any::<bool>(),
+        ) {
+            let p = poly(&c);
+            prop_assert_eq!(Residues::of(&p).derivative(), Residues::of(&p.derivative()));
+            let q = roots.iter().fold(ZPoly::one(), |acc, &r| &acc * &poly(&[-r, 1]));
+            let q = if twice { &q * &poly(&[-*roots.iter().next().unwrap(), 1]) } else { q };
+            let (image, kept) = Residues::image(&q);
+            prop_assert!(kept);
+            prop_assert_eq!(image.proves_squarefree(), !twice);
+        }
     }
 
     proptest! {

@@ -254,6 +254,12 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// node around one with ends of another sign holds roots, and is not
     /// tested again.
     witnesses: Vec<(Rat, i32)>,
+    /// Whether the function is proven squarefree (so that
+    /// [`RootIter::convex_exclusion`] settles every near miss it can
+    /// reach): by construction in an exact isolation, by one modular
+    /// image ([`Residues::proves_squarefree`](ccd_poly::Residues::proves_squarefree))
+    /// in a filter-only one, on first need.
+    squarefree: Option<bool>,
     /// Exact work done so far, in word operations ([`exact_work`]); the
     /// isolation stops once it passes `max_work` ([`RootIter::exhausted`]).
     work: u64,
@@ -348,6 +354,7 @@ impl RootIter<Arc<SignProbe>> {
             budget: 0,
             float_failures: 0,
             witnesses: Vec::new(),
+            squarefree: Some(true),
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -385,6 +392,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             budget: 2 * coeffs.len() + 16,
             float_failures: 0,
             witnesses: Vec::new(),
+            squarefree: None,
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -658,6 +666,14 @@ impl<M: SignModel + Clone> RootIter<M> {
         Exclusion::Open
     }
 
+    /// [`RootIter::squarefree`], decided on first need.
+    fn proven_squarefree(&mut self) -> bool {
+        *self.squarefree.get_or_insert_with(|| {
+            let (image, kept) = self.base.residues();
+            kept && image.proves_squarefree()
+        })
+    }
+
     /// Ends a filter-only isolation as undecided.
     fn give_up(&mut self) -> Option<RealRoot<M>> {
         self.undecided = true;
@@ -726,17 +742,22 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             };
             node.cluster.var = var;
             // A cluster that Descartes' rule has not resolved for a streak
-            // of generations (exact isolation only: a filter-only one may
-            // see a multiple root, where the convexity test never ends):
-            // first the convexity test, which settles a near miss (no real
-            // root) at once, unless a witness already shows roots; then a
-            // Newton zoom.
-            if !self.filter_only && var >= 2 && node.cluster.streak >= ZOOM_STREAK {
+            // of generations: first the convexity test, which settles a
+            // near miss (no real root) at once, unless a witness already
+            // shows roots; then, in an exact isolation, a Newton zoom. A
+            // filter-only isolation, which does not zoom, tries the test
+            // once every streak, and only on a function proven squarefree:
+            // at a multiple root the test could never end (measured: +87 %
+            // on a family whose `sr0` has a square factor).
+            let streak = node.cluster.streak;
+            if var >= 2 && streak >= ZOOM_STREAK {
                 let shown = |(x, sign): &(Rat, i32)| *sign != first && node.lo < *x && *x < node.hi;
                 if first == last
                     && first != 0
+                    && (!self.filter_only || streak % ZOOM_STREAK == 0)
                     && !self.witnesses.iter().any(shown)
                     && node.convexity() == Some(first)
+                    && self.proven_squarefree()
                 {
                     match self.convex_exclusion(&node, first) {
                         Exclusion::RootFree => continue,
@@ -744,6 +765,8 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                         Exclusion::Open => {}
                     }
                 }
+            }
+            if !self.filter_only && var >= 2 && node.cluster.streak >= ZOOM_STREAK {
                 if let Some(zoomed) = self.zoom(&mut node, var) {
                     self.stack.push(Item::Node(zoomed));
                     continue;

@@ -243,6 +243,48 @@ fn clusters_far_below_bisection_depth() {
     assert!(found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi());
 }
 
+/// A filter-only isolation settles a near miss by the convexity test when
+/// its function is proven squarefree: a complex pair `2/5 ± 2^(−100)·i`
+/// (whose Bernstein coefficients keep var 2 down to the filter's depth)
+/// next to a simple root at 3/4 is decided, with that one root; the same
+/// pair squared (a multiple root, never settled by the test) is left
+/// undecided, as before.
+#[test]
+fn filtered_near_miss_is_settled_when_squarefree() {
+    let scale = Int::one().shl(200);
+    let pair = ZPoly::new(vec![
+        Int::from(4) * &scale + Int::from(25),
+        Int::from(-20) * &scale,
+        Int::from(25) * &scale,
+    ]);
+    for (p, settled) in [
+        (&pair * &linear(&Rat::from_frac(3, 4)), true),
+        (&(&pair * &pair) * &linear(&Rat::from_frac(3, 4)), false),
+    ] {
+        let b = ccd_poly::Bernstein::from_power(&p, &Rat::zero(), &Rat::one());
+        let coeffs: Vec<Interval> = b
+            .coeffs()
+            .iter()
+            .map(|c| {
+                Interval::from_int_scaled(
+                    c,
+                    b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64 - 900,
+                )
+            })
+            .collect();
+        let model = std::sync::Arc::new(crate::SignProbe::new(&p));
+        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
+        let found: Vec<_> = iter.by_ref().collect();
+        assert_eq!(!iter.undecided(), settled, "{p:?}");
+        if settled {
+            assert_eq!(found.len(), 1);
+            assert!(
+                found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi()
+            );
+        }
+    }
+}
+
 /// The bound on exact work stops an isolation and says so; below it the
 /// same isolation runs to the end and is not marked.
 #[test]
