@@ -47,13 +47,17 @@ struct Node {
 
 /// What a node's ancestry says about a root cluster (see
 /// [`RootIter::zoom`]): the sign variations of its parent, for how many
-/// generations they have not dropped, and the zoom factor `2^speed` for the
-/// next Newton step.
+/// generations they have not dropped, the zoom factor `2^speed` for the
+/// next Newton step, and `open_at`, the width `2^(−open_at)` of the last
+/// node where [`RootIter::convex_exclusion`] stayed open (its descendants
+/// retry only once they are `2^(EXCLUSION_BITS/2)` narrower, where a miss
+/// it could not reach may come within reach).
 #[derive(Clone, Copy, Debug)]
 struct Cluster {
     var: usize,
     streak: u32,
     speed: u32,
+    open_at: Option<i64>,
 }
 
 impl Default for Cluster {
@@ -62,6 +66,7 @@ impl Default for Cluster {
             var: 0,
             streak: 0,
             speed: MIN_SPEED,
+            open_at: None,
         }
     }
 }
@@ -115,6 +120,12 @@ impl SignSummary {
 }
 
 impl Node {
+    /// `⌊−log₂(hi − lo)⌋`, within one.
+    fn log_width(&self) -> i64 {
+        let w = &self.hi - &self.lo;
+        w.denom().bits() as i64 - w.numer().bits() as i64
+    }
+
     fn exact(p: &ZPoly, lo: Rat, hi: Rat, depth: u32) -> Node {
         let b = Bernstein::from_power(p, &lo, &hi);
         Node {
@@ -367,23 +378,36 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// times one positive constant. Only the filter is used: a node with a
     /// coefficient it cannot sign (an enclosure holding 0, as for an exact
     /// zero) is split, within a budget of `2n + 16` such splits; past that,
-    /// at a root at `lo` or `hi`, at a multiple root, or at roots closer
-    /// than `2^(−64)` of the interval, the iteration ends early and
-    /// [`RootIter::undecided`] is `true`. Every root it yields is proven.
+    /// at a root at `lo` or `hi` whose coefficient's enclosure is not the
+    /// point 0, at a multiple root, or at roots closer than `2^(−64)` of
+    /// the interval, the iteration ends early and [`RootIter::undecided`]
+    /// is `true`. An end coefficient enclosed by the point 0 proves a root
+    /// at that end (the end coefficients are the end values), which is
+    /// yielded. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
         let f = FilterBernstein::from_intervals(coeffs);
-        let undecided = coeffs.is_empty() || lo >= hi || !f.decided();
-        let stack = if undecided {
-            vec![]
-        } else {
-            vec![Item::Node(Node {
+        // An identically zero function (every coefficient the point 0)
+        // has no isolated roots to yield.
+        let undecided =
+            coeffs.is_empty() || lo >= hi || !f.decided() || f.signs().all(|s| s == Some(0));
+        let mut stack = Vec::new();
+        if !undecided {
+            let zero_at = |i: usize| f.signs().nth(i) == Some(Some(0));
+            let (first, last) = (zero_at(0), zero_at(coeffs.len() - 1));
+            if last {
+                stack.push(Item::Root(RealRoot::exact(model.clone(), hi.clone())));
+            }
+            stack.push(Item::Node(Node {
                 lo: lo.clone(),
                 hi: hi.clone(),
                 depth: 0,
                 coeffs: Coeffs::Filter(f),
                 cluster: Cluster::default(),
-            })]
-        };
+            }));
+            if first {
+                stack.push(Item::Root(RealRoot::exact(model.clone(), lo.clone())));
+            }
+        }
         RootIter {
             base: model,
             stack,
@@ -530,6 +554,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             var: k,
             streak: ZOOM_STREAK,
             speed: (speed * 2).min(MAX_SPEED),
+            open_at: node.cluster.open_at,
         };
         Some(Node::from_exact_bernstein(
             middle,
@@ -552,11 +577,16 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// pair of complex roots at distance `ε` from the axis (a near miss)
     /// needs about `log₂(1/ε)` bits, and a handful of rounds instead of the
     /// bisections or Newton zooms that Descartes' rule needs to see them
-    /// apart (those shrink the node to the width `ε`). `false` when a
-    /// point with `g ≤ 0` turns up (real roots), the node's ends are not
-    /// dyadic, or the precision bound [`EXCLUSION_BITS`] is reached: the
-    /// node is then subdivided as before. Every step is exact, so a `true`
-    /// is a proof.
+    /// apart (those shrink the node to the width `ε`). A point with
+    /// `g ≤ 0` is returned as a [`Exclusion::Witness`] of real roots; the
+    /// node's ends not dyadic, or the grid finer than [`EXCLUSION_BITS`]
+    /// past the node's width, or [`EXCLUSION_ROUNDS`] spent, leave it
+    /// [`Exclusion::Open`], and the node is subdivided as before. Every
+    /// step is exact, so [`Exclusion::RootFree`] is a proof. The jets are
+    /// not charged to the isolation's work budget: at most
+    /// `2·EXCLUSION_ROUNDS + 2` of them per try, on numbers at most
+    /// `EXCLUSION_BITS` past the node's own, and a cluster retries only
+    /// after shrinking by `2^(EXCLUSION_BITS/2)` ([`Cluster::open_at`]).
     fn convex_exclusion(&self, node: &Node, s: i32) -> Exclusion {
         let (Some(lo), Some(hi)) = (
             Dyadic::from_rat_exact(&node.lo),
@@ -565,6 +595,8 @@ impl<M: SignModel + Clone> RootIter<M> {
             return Exclusion::Open;
         };
         let base_bits = (-lo.e).max(-hi.e).max(0) as u64;
+        let width = hi.sub(&lo);
+        let log_node = -(width.m.bits() as i64 + width.e);
         // (x, g(x), g′(x)), exactly.
         let point = |x: Dyadic| {
             let j = self.base.exact_jet_at(&x.to_rat());
@@ -608,10 +640,11 @@ impl<M: SignModel + Clone> RootIter<M> {
             if v.signum() > 0 {
                 return Exclusion::RootFree;
             }
-            // The grid: twice the bits of the bracket's width (a secant
-            // step squares the error), past the node's own.
+            // The grid: twice the bits of the bracket's width relative to
+            // the node's (a secant step squares the error), past the
+            // node's own.
             let log_w = -(w.m.bits() as i64 + w.e);
-            let k = (2 * log_w.max(0) as u64 + 8).max(base_bits + 8);
+            let k = (2 * log_w - log_node + 8).max(base_bits as i64 + 8) as u64;
             if k > base_bits + EXCLUSION_BITS {
                 return Exclusion::Open;
             }
@@ -664,6 +697,33 @@ impl<M: SignModel + Clone> RootIter<M> {
             }
         }
         Exclusion::Open
+    }
+
+    /// A screen before [`RootIter::convex_exclusion`]'s exact jets, from
+    /// the model's `f64` guesses (no proof: it only decides whether the
+    /// test is worth trying): the minimum of `g = s·p` located to `2^(−24)`
+    /// of the node by bisection on the sign of `g′`, and `g` there clearly
+    /// below zero (by a millionth of its smaller end value) says the
+    /// cluster is real roots, far enough apart for `f64` to see, which the
+    /// zoom separates without the test's jets. A near miss, or roots too
+    /// close for `f64`, is not screened out.
+    fn real_roots_likely(&self, node: &Node, s: i32) -> bool {
+        let g = |x: f64| {
+            let (v, d) = self.base.approx_value_and_slope(x);
+            (f64::from(s) * v, f64::from(s) * d)
+        };
+        let (mut u, mut v) = (node.lo.to_f64(), node.hi.to_f64());
+        let ends = g(u).0.min(g(v).0);
+        for _ in 0..24 {
+            let m = 0.5 * (u + v);
+            if g(m).1 < 0.0 {
+                u = m;
+            } else {
+                v = m;
+            }
+        }
+        let least = g(0.5 * (u + v)).0;
+        ends.is_finite() && ends > 0.0 && least < -1e-6 * ends
     }
 
     /// [`RootIter::squarefree`], decided on first need.
@@ -758,11 +818,19 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     && !self.witnesses.iter().any(shown)
                     && node.convexity() == Some(first)
                     && self.proven_squarefree()
+                    && !self.real_roots_likely(&node, first)
                 {
-                    match self.convex_exclusion(&node, first) {
-                        Exclusion::RootFree => continue,
-                        Exclusion::Witness(x, sign) => self.witnesses.push((x, sign)),
-                        Exclusion::Open => {}
+                    let log_width = node.log_width();
+                    let due = node
+                        .cluster
+                        .open_at
+                        .is_none_or(|at| log_width >= at + (EXCLUSION_BITS / 2) as i64);
+                    if due {
+                        match self.convex_exclusion(&node, first) {
+                            Exclusion::RootFree => continue,
+                            Exclusion::Witness(x, sign) => self.witnesses.push((x, sign)),
+                            Exclusion::Open => node.cluster.open_at = Some(log_width),
+                        }
                     }
                 }
             }
@@ -862,6 +930,22 @@ mod tests {
         let (lo, hi) = (Rat::from_frac(1, 4), Rat::from_frac(3, 8));
         let (found, _) = exclusion(&p, &lo, &hi).expect("convex");
         assert!(matches!(found, Exclusion::Open));
+    }
+
+    /// The test's reach counts from the node's width: the same miss, 300
+    /// bits inside a node of width `2^(−1200)`, is settled.
+    #[test]
+    fn reach_is_relative_to_the_node() {
+        let two_k = Int::one().shl(3000);
+        let p = ZPoly::new(vec![
+            &two_k + &Int::from(9),
+            -&(&two_k * &Int::from(6)),
+            &two_k * &Int::from(9),
+        ]);
+        let lo = Rat::dyadic(Rat::from_frac(1, 3).mul_pow2(1200).floor(), 1200);
+        let hi = &lo + &Rat::dyadic(Int::one(), 1200);
+        let (found, _) = exclusion(&p, &lo, &hi).expect("convex");
+        assert!(matches!(found, Exclusion::RootFree));
     }
 
     fn summary(signs: &[i32]) -> Option<SignSummary> {

@@ -197,6 +197,68 @@ proptest! {
         prop_assert!(iter.undecided() || blurred[coeffs.len() / 2].lo == 0.0 && blurred[coeffs.len() / 2].hi == 0.0);
     }
 
+    /// Clusters at every depth the isolation meets: one to three pairs
+    /// `a ± 2^(−k)` (real, a near hit) or `a ± 2^(−k)·i` (a near miss) with
+    /// `k` up to 700, times a linear factor. Exact isolation finds exactly
+    /// the real roots in `[0, 1]`, each in its own interval, in order;
+    /// filter-only isolation, from enclosures of the same coefficients,
+    /// finds a prefix of them, all of them when it is decided.
+    #[test]
+    fn clusters_are_isolated_exactly(
+        raw in proptest::collection::vec((1i64..50, 2i64..51, 8u64..700, proptest::bool::ANY), 1..4),
+        r in (0i64..=60, 1i64..=60),
+    ) {
+        let mut centres: Vec<Rat> = Vec::new();
+        let mut poly = linear(&Rat::from_frac(r.0.min(r.1), r.1));
+        let mut roots = vec![Rat::from_frac(r.0.min(r.1), r.1)];
+        for (n, d, k, hit) in raw {
+            let a = Rat::from_frac(n.min(d - 1), d);
+            if centres.contains(&a) {
+                continue;
+            }
+            centres.push(a.clone());
+            // 2^(2k)·(d·t − n)² ∓ d²: roots (or complex roots) a ± 2^(−k)(·i).
+            let (n, d) = (a.numer().clone(), a.denom().clone());
+            let two_k = Int::one().shl(2 * k);
+            let sq = ZPoly::new(vec![
+                &(&n * &n) * &two_k,
+                -&(&(&n * &d) * &two_k.shl(1)),
+                &(&d * &d) * &two_k,
+            ]);
+            let dd = ZPoly::new(vec![&d * &d]);
+            poly = &poly * &(if hit { &sq - &dd } else { &sq + &dd });
+            if hit {
+                roots.push(&a - &pow2(k));
+                roots.push(&a + &pow2(k));
+            }
+        }
+        roots.sort();
+        roots.dedup();
+        let found = all_roots(&poly, &Rat::zero(), &Rat::one());
+        prop_assert_eq!(found.len(), roots.len());
+        for (f, r) in found.iter().zip(&roots) {
+            prop_assert!(f.lo() <= r && r <= f.hi(), "{} not in {:?}", r, f);
+        }
+        for pair in found.windows(2) {
+            prop_assert!(pair[0].hi() <= pair[1].lo());
+        }
+        let b = ccd_poly::Bernstein::from_power(&poly, &Rat::zero(), &Rat::one());
+        let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
+        let sign = b.scale().signum();
+        let coeffs: Vec<Interval> = b.coeffs().iter().map(|c| {
+            let iv = Interval::from_int_scaled(c, top - 900);
+            if sign < 0 { -iv } else { iv }
+        }).collect();
+        let model = std::sync::Arc::new(crate::SignProbe::new(&poly));
+        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
+        let found: Vec<_> = iter.by_ref().collect();
+        prop_assert!(found.len() <= roots.len());
+        prop_assert!(iter.undecided() || found.len() == roots.len(), "{:?} {:?} {:?}", found, roots, coeffs);
+        for (f, r) in found.iter().zip(&roots) {
+            prop_assert!(f.lo() <= r && r <= f.hi(), "filtered: {} not in {:?}", r, f);
+        }
+    }
+
     /// First-root-only isolation returns the smallest root.
     #[test]
     fn first_root_is_smallest(a in 1i64..99, b in 1i64..99) {
