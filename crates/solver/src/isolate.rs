@@ -699,31 +699,30 @@ impl<M: SignModel + Clone> RootIter<M> {
         Exclusion::Open
     }
 
-    /// A screen before [`RootIter::convex_exclusion`]'s exact jets, from
-    /// the model's `f64` guesses (no proof: it only decides whether the
-    /// test is worth trying): the minimum of `g = s·p` located to `2^(−24)`
-    /// of the node by bisection on the sign of `g′`, and `g` there clearly
-    /// below zero (by a millionth of its smaller end value) says the
-    /// cluster is real roots, far enough apart for `f64` to see, which the
-    /// zoom separates without the test's jets. A near miss, or roots too
-    /// close for `f64`, is not screened out.
-    fn real_roots_likely(&self, node: &Node, s: i32) -> bool {
-        let g = |x: f64| {
-            let (v, d) = self.base.approx_value_and_slope(x);
-            (f64::from(s) * v, f64::from(s) * d)
-        };
+    /// A cheap witness before [`RootIter::convex_exclusion`]'s exact
+    /// jets: the minimum of `g = s·p` located to `2^(−24)` of the node by
+    /// bisection on the sign of the model's `f64` guess of `g′` (no proof),
+    /// then the sign of `p` there from the model's certified enclosure
+    /// ([`SignModel::float_sign_at`]). A sign opposite to `s` proves real
+    /// roots in the node (the ends have sign `s`), as the test's own
+    /// witness would, without its jets; a near miss never yields one.
+    fn float_witness(&self, node: &Node, s: i32) -> Option<(Rat, i32)> {
+        let slope = |x: f64| f64::from(s) * self.base.approx_value_and_slope(x).1;
         let (mut u, mut v) = (node.lo.to_f64(), node.hi.to_f64());
-        let ends = g(u).0.min(g(v).0);
         for _ in 0..24 {
             let m = 0.5 * (u + v);
-            if g(m).1 < 0.0 {
+            if slope(m) < 0.0 {
                 u = m;
             } else {
                 v = m;
             }
         }
-        let least = g(0.5 * (u + v)).0;
-        ends.is_finite() && ends > 0.0 && least < -1e-6 * ends
+        let x = Rat::from_f64_exact(0.5 * (u + v))?;
+        if !(node.lo < x && x < node.hi) {
+            return None;
+        }
+        let sign = self.base.float_sign_at(&x)?;
+        (sign != s).then_some((x, sign))
     }
 
     /// [`RootIter::squarefree`], decided on first need.
@@ -803,8 +802,9 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             node.cluster.var = var;
             // A cluster that Descartes' rule has not resolved for a streak
             // of generations: first the convexity test, which settles a
-            // near miss (no real root) at once, unless a witness already
-            // shows roots; then, in an exact isolation, a Newton zoom. A
+            // near miss (no real root) at once, unless a witness (its own,
+            // or a point where the filter proves the other sign) shows
+            // roots; then, in an exact isolation, a Newton zoom. A
             // filter-only isolation, which does not zoom, tries the test
             // once every streak, and only on a function proven squarefree:
             // at a multiple root the test could never end (measured: +87 %
@@ -818,14 +818,15 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     && !self.witnesses.iter().any(shown)
                     && node.convexity() == Some(first)
                     && self.proven_squarefree()
-                    && !self.real_roots_likely(&node, first)
                 {
                     let log_width = node.log_width();
                     let due = node
                         .cluster
                         .open_at
                         .is_none_or(|at| log_width >= at + (EXCLUSION_BITS / 2) as i64);
-                    if due {
+                    if let Some(witness) = self.float_witness(&node, first) {
+                        self.witnesses.push(witness);
+                    } else if due {
                         match self.convex_exclusion(&node, first) {
                             Exclusion::RootFree => continue,
                             Exclusion::Witness(x, sign) => self.witnesses.push((x, sign)),
@@ -912,6 +913,41 @@ mod tests {
                 } else {
                     prop_assert!(matches!(found, Exclusion::RootFree), "near miss not settled");
                 }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The `f64` witness is a proof: a point inside the node where the
+        /// exact sign is the one claimed, opposite to the ends'; none for a
+        /// near miss; and a near hit that `f64` sees (`k ≤ 16`) is shown.
+        #[test]
+        fn float_witness_is_sound(n in 1i64..50, d in 2i64..51, k in 8u64..60, hit in any::<bool>()) {
+            prop_assume!(n < d);
+            let a = Rat::from_frac(n, d);
+            let two_k = Int::one().shl(2 * k);
+            let (n, d) = (a.numer().clone(), a.denom().clone());
+            let sq = ZPoly::new(vec![&(&n * &n) * &two_k, -&(&(&n * &d) * &two_k.shl(1)), &(&d * &d) * &two_k]);
+            let dd = ZPoly::new(vec![&d * &d]);
+            let p = if hit { &sq - &dd } else { &sq + &dd };
+            let lo = Rat::dyadic(a.mul_pow2(6).floor(), 6);
+            let hi = &lo + &Rat::dyadic(Int::one(), 6);
+            let eps = Rat::dyadic(Int::one(), k);
+            prop_assume!(lo < &a - &eps && &a + &eps < hi);
+            let iter = RootIter::new(SignProbe::shared(p.clone()), &lo, &hi);
+            let node = Node::exact(&p, lo.clone(), hi.clone(), 0);
+            let Some(SignSummary { first, .. }) = node.signs() else {
+                return Ok(());
+            };
+            match iter.float_witness(&node, first) {
+                Some((x, sign)) => {
+                    prop_assert!(hit, "a witness of a near miss");
+                    prop_assert!(lo < x && x < hi);
+                    prop_assert_eq!(p.sign_at(&x), sign);
+                    prop_assert!(sign != first);
+                }
+                None => prop_assert!(!hit || k > 16, "near hit at 2^-{} not shown", k),
             }
         }
     }
