@@ -851,6 +851,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 mod tests {
     use super::{Exclusion, Node, RootIter, SignSummary};
     use crate::model::SignProbe;
+    use crate::tests::{cluster, dyadic_node};
     use ccd_arith::{Int, Rat};
     use ccd_poly::ZPoly;
     use proptest::prelude::*;
@@ -880,17 +881,11 @@ mod tests {
         ) {
             prop_assume!(n < d);
             let a = Rat::from_frac(n, d);
-            // 2^(2k)·(d·t − n)² ± d²: roots (or complex roots) a ± 2^(−k)·(i).
-            let two_k = Int::one().shl(2 * k);
-            let (n, d) = (a.numer().clone(), a.denom().clone());
-            let sq = ZPoly::new(vec![&(&n * &n) * &two_k, -&(&(&n * &d) * &two_k.shl(1)), &(&d * &d) * &two_k]);
-            let dd = ZPoly::new(vec![&d * &d]);
-            let cluster = if hit { &sq - &dd } else { &sq + &dd };
+            let cluster = cluster(&a, k, hit);
             let root = Rat::from_frac(r.0, r.1);
             let p = &cluster * &ZPoly::new(vec![-root.numer().clone(), root.denom().clone()]);
             // The dyadic node of width 2^(−j) around a, if the cluster fits.
-            let lo = Rat::dyadic(a.mul_pow2(j as i64).floor(), j);
-            let hi = &lo + &Rat::dyadic(Int::one(), j);
+            let (lo, hi) = dyadic_node(&a, j);
             let eps = Rat::dyadic(Int::one(), k);
             prop_assume!(lo < &a - &eps && &a + &eps < hi);
             let Some((found, s)) = exclusion(&p, &lo, &hi) else {
@@ -926,13 +921,8 @@ mod tests {
         fn float_witness_is_sound(n in 1i64..50, d in 2i64..51, k in 8u64..60, hit in any::<bool>()) {
             prop_assume!(n < d);
             let a = Rat::from_frac(n, d);
-            let two_k = Int::one().shl(2 * k);
-            let (n, d) = (a.numer().clone(), a.denom().clone());
-            let sq = ZPoly::new(vec![&(&n * &n) * &two_k, -&(&(&n * &d) * &two_k.shl(1)), &(&d * &d) * &two_k]);
-            let dd = ZPoly::new(vec![&d * &d]);
-            let p = if hit { &sq - &dd } else { &sq + &dd };
-            let lo = Rat::dyadic(a.mul_pow2(6).floor(), 6);
-            let hi = &lo + &Rat::dyadic(Int::one(), 6);
+            let p = cluster(&a, k, hit);
+            let (lo, hi) = dyadic_node(&a, 6);
             let eps = Rat::dyadic(Int::one(), k);
             prop_assume!(lo < &a - &eps && &a + &eps < hi);
             let iter = RootIter::new(SignProbe::shared(p.clone()), &lo, &hi);
@@ -956,13 +946,8 @@ mod tests {
     /// zooms, as `clusters_far_below_bisection_depth` checks).
     #[test]
     fn a_miss_beyond_reach_stays_open() {
-        // 2^(2·1500)·(3t − 1)² + 9: complex roots 1/3 ± 2^(−1500)·i.
-        let two_k = Int::one().shl(3000);
-        let p = ZPoly::new(vec![
-            &two_k + &Int::from(9),
-            -&(&two_k * &Int::from(6)),
-            &two_k * &Int::from(9),
-        ]);
+        // Complex roots 1/3 ± 2^(−1500)·i, in a node 1/8 wide.
+        let p = cluster(&Rat::from_frac(1, 3), 1500, false);
         let (lo, hi) = (Rat::from_frac(1, 4), Rat::from_frac(3, 8));
         let (found, _) = exclusion(&p, &lo, &hi).expect("convex");
         assert!(matches!(found, Exclusion::Open));
@@ -972,15 +957,9 @@ mod tests {
     /// bits inside a node of width `2^(−1200)`, is settled.
     #[test]
     fn reach_is_relative_to_the_node() {
-        let two_k = Int::one().shl(3000);
-        let p = ZPoly::new(vec![
-            &two_k + &Int::from(9),
-            -&(&two_k * &Int::from(6)),
-            &two_k * &Int::from(9),
-        ]);
-        let lo = Rat::dyadic(Rat::from_frac(1, 3).mul_pow2(1200).floor(), 1200);
-        let hi = &lo + &Rat::dyadic(Int::one(), 1200);
-        let (found, _) = exclusion(&p, &lo, &hi).expect("convex");
+        let a = Rat::from_frac(1, 3);
+        let (lo, hi) = dyadic_node(&a, 1200);
+        let (found, _) = exclusion(&cluster(&a, 1500, false), &lo, &hi).expect("convex");
         assert!(matches!(found, Exclusion::RootFree));
     }
 

@@ -17,6 +17,32 @@ fn product(factors: &[(Rat, u32)]) -> ZPoly {
         .fold(ZPoly::one(), |acc, (r, m)| &acc * &linear(r).pow(*m))
 }
 
+/// A root pair at `a`: `2^(2k)·(d·t − n)² ∓ d²` for `a = n/d`, with real
+/// roots `a ± 2^(−k)` (`hit`, a near hit) or complex roots `a ± 2^(−k)·i`
+/// (a near miss).
+pub(crate) fn cluster(a: &Rat, k: u64, hit: bool) -> ZPoly {
+    let two_k = Int::one().shl(2 * k);
+    let (n, d) = (a.numer().clone(), a.denom().clone());
+    let sq = ZPoly::new(vec![
+        &(&n * &n) * &two_k,
+        -&(&(&n * &d) * &two_k.shl(1)),
+        &(&d * &d) * &two_k,
+    ]);
+    let dd = ZPoly::new(vec![&d * &d]);
+    if hit {
+        &sq - &dd
+    } else {
+        &sq + &dd
+    }
+}
+
+/// The dyadic interval of width `2^(−j)` holding `a`.
+pub(crate) fn dyadic_node(a: &Rat, j: u64) -> (Rat, Rat) {
+    let lo = Rat::dyadic(a.mul_pow2(j as i64).floor(), j);
+    let hi = &lo + &Rat::dyadic(Int::one(), j);
+    (lo, hi)
+}
+
 fn all_roots(p: &ZPoly, lo: &Rat, hi: &Rat) -> Vec<crate::RealRoot> {
     isolate(p, lo, hi).expect("nonzero").collect()
 }
@@ -217,16 +243,7 @@ proptest! {
                 continue;
             }
             centres.push(a.clone());
-            // 2^(2k)·(d·t − n)² ∓ d²: roots (or complex roots) a ± 2^(−k)(·i).
-            let (n, d) = (a.numer().clone(), a.denom().clone());
-            let two_k = Int::one().shl(2 * k);
-            let sq = ZPoly::new(vec![
-                &(&n * &n) * &two_k,
-                -&(&(&n * &d) * &two_k.shl(1)),
-                &(&d * &d) * &two_k,
-            ]);
-            let dd = ZPoly::new(vec![&d * &d]);
-            poly = &poly * &(if hit { &sq - &dd } else { &sq + &dd });
+            poly = &poly * &cluster(&a, k, hit);
             if hit {
                 roots.push(&a - &pow2(k));
                 roots.push(&a + &pow2(k));
