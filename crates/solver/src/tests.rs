@@ -364,6 +364,29 @@ fn filtered_near_miss_is_settled_when_squarefree() {
     }
 }
 
+/// A filter-only isolation retries the convexity test every streak after
+/// an open try (it never reaches the depth where an exact isolation's
+/// throttle would let it retry): `3/13 ± 2^(−900)·i`, out of reach at the
+/// first try (depth 13), is settled at a later one, and the root `1/5` is
+/// the only one found.
+#[test]
+fn filtered_isolation_retries_after_an_open_try() {
+    let p = &cluster(&Rat::from_frac(3, 13), 900, false) * &linear(&Rat::from_frac(1, 5));
+    let b = ccd_poly::Bernstein::from_power(&p, &Rat::zero(), &Rat::one());
+    let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
+    let coeffs: Vec<Interval> = b
+        .coeffs()
+        .iter()
+        .map(|c| Interval::from_int_scaled(c, top - 900))
+        .collect();
+    let model = std::sync::Arc::new(crate::SignProbe::new(&p));
+    let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
+    let found: Vec<_> = iter.by_ref().collect();
+    assert!(!iter.undecided());
+    assert_eq!(found.len(), 1);
+    assert!(found[0].lo() <= &Rat::from_frac(1, 5) && &Rat::from_frac(1, 5) <= found[0].hi());
+}
+
 /// The bound on exact work stops an isolation and says so; below it the
 /// same isolation runs to the end and is not marked.
 #[test]
