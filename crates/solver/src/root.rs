@@ -136,6 +136,22 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
     }
 
+    /// Cuts a sliver `2^(−g)` of the width off the end `lo` (`from_lo`) or
+    /// `hi` (one sign evaluation); `true` if the root is in the sliver,
+    /// which is then the enclosure.
+    fn cut_sliver(&mut self, from_lo: bool, g: u64) -> bool {
+        let d = self.width().mul_pow2(-(g as i64));
+        let x = if from_lo {
+            &self.lo + &d
+        } else {
+            &self.hi - &d
+        };
+        let s = self.base.filtered_sign_at(&x);
+        let inside = (s != self.sign_lo) == from_lo || s == 0;
+        self.cut(x, s);
+        inside
+    }
+
     /// Halves the enclosure (one sign evaluation).
     pub fn bisect(&mut self) {
         if self.sign_lo != 0 {
@@ -231,13 +247,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `D = d/2^e` and `T = max(v, s + e)`, and only the remainder is
     /// enclosed in `f64` (`p″` over `I`, times `D²`); where that does not
     /// decide, `p(x)` is evaluated exactly.
-    fn exact_newton_jump(&mut self, target: &Rat) -> bool {
-        let w = self.width();
-        let quarter = &w * &Rat::from_frac(1, 4);
+    fn exact_newton_jump(&mut self, target: &Rat, w: &Rat) -> bool {
+        let quarter = w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
         let second = self.base.enclose_second(self.enclosure());
-        if let Some(done) = self.ball_newton_jump(target, &w, &m, second) {
+        if let Some(done) = self.ball_newton_jump(target, w, &m, second) {
             return done;
         }
         let jet = self.base.exact_jet_at(&m);
@@ -245,7 +260,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             return false;
         }
         let (_, slope) = jet.enclose();
-        let k = newton_exponent(&w, target, slope, second);
+        let k = newton_exponent(w, target, slope, second);
         // 2^k·x = (a·S·2^(k−j) − V·2^(k+s−v))/S, over a common power of two
         // that keeps every exponent nonnegative.
         let (v, s) = (jet.value_exp, jet.slope_exp);
@@ -476,19 +491,67 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // Exact Newton once the enclosure is narrow enough for its
         // quadratic regime to be likely (`2^(−10)` of the span).
         let narrow = Rat::dyadic(Int::one(), 10);
-        while self.sign_lo != 0 && self.width() > *max_width {
+        // Exact jumps that gain under 3 bits and leave the same end in
+        // place, six in a row (three also caught passing slow stretches of
+        // ordinary scenes, where the slivers cost up to 3 %): the root sits
+        // next to that end with a close neighbour beyond it, where Newton's
+        // step only halves the error (one bit per exact evaluation).
+        // Slivers `2^(−g)` of the width at that end are then cut off, `g`
+        // doubling while the root is in them and halving while not (one
+        // exact sign each): about `log₂` of the bits to the root's
+        // neighbourhood instead of them. A sliver may overshoot
+        // `max_width`: by at most the bits this call has gained, plus 16,
+        // as `g` starts at 16 and doubles only after a sliver held the
+        // root. (Whether `lo` stayed is told by its bit lengths: a cue
+        // for speed only.)
+        let lo_key = |r: &RealRoot<M>| (r.lo.numer().bits(), r.lo.denom().bits());
+        let mut stuck = (None::<bool>, 0u32);
+        let mut sliver: Option<(bool, u64)> = None;
+        // The width before the last exact jump, and `lo_key` then.
+        let mut jumped: Option<(Rat, (u64, u64))> = None;
+        loop {
+            let w = self.width();
+            if self.sign_lo == 0 || w <= *max_width {
+                return;
+            }
+            if let Some((before, key)) = jumped.take() {
+                let stayed = (w.mul_pow2(3) > before).then(|| lo_key(self) == key);
+                stuck = match (stayed, stuck) {
+                    (Some(end), (Some(last), n)) if end == last => (Some(end), n + 1),
+                    (Some(end), _) => (Some(end), 1),
+                    (None, _) => (None, 0),
+                };
+                if let (Some(from_lo), 6) = stuck {
+                    (sliver, stuck) = (Some((from_lo, 16)), (None, 0));
+                }
+            }
+            if let Some((from_lo, g)) = sliver {
+                sliver = if self.cut_sliver(from_lo, g) {
+                    Some((from_lo, g * 2))
+                } else {
+                    (g > 4).then_some((from_lo, g / 2))
+                };
+                continue;
+            }
+            let mut w = w;
             if float_newton && float_wait == 0 {
                 match self.newton_jump(max_width) {
                     Jump::Progress => continue,
                     Jump::Failed => float_wait = 2,
                     Jump::AtResolution => float_newton = false,
                 }
+                // A jump that did not halve the enclosure may still have
+                // moved an end.
+                w = self.width();
             }
             float_wait = float_wait.saturating_sub(1);
-            if wait == 0 && self.width() <= narrow {
-                if self.exact_newton_jump(max_width) {
+            if wait == 0 && w <= narrow {
+                let key = lo_key(self);
+                if self.exact_newton_jump(max_width, &w) {
+                    jumped = Some((w, key));
                     continue;
                 }
+                stuck = (None, 0);
                 wait = 4;
             }
             wait = wait.saturating_sub(1);

@@ -83,6 +83,33 @@ fn irrational_roots_refine_to_any_width() {
     assert!(r.lo() * r.lo() < Rat::from(2) && r.hi() * r.hi() > Rat::from(2));
 }
 
+/// A root with a close neighbour just beyond an end of its enclosure, the
+/// end next to it: Newton's step only halves the error there (one bit per
+/// exact evaluation), and the refinement cuts slivers off that end
+/// instead. The roots `1/2 ± 2^(−600)/√3` of `3·2^1200·(t − 1/2)² − 1`
+/// (times `5t − 1`), refined to `2^(−3000)`: each enclosure is that narrow
+/// and holds its root (a sign change of `p`, exactly, on the right side of
+/// `1/2`).
+#[test]
+fn a_root_next_to_its_neighbour_refines_fast_and_right() {
+    let pair = ZPoly::new(vec![
+        Int::one().shl(1198) * Int::from(3) - Int::one(),
+        -(Int::one().shl(1200) * Int::from(3)),
+        Int::one().shl(1200) * Int::from(3),
+    ]);
+    let p = &pair * &linear(&Rat::from_frac(1, 5));
+    let mut found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 3);
+    let target = pow2(3000);
+    let half = Rat::from_frac(1, 2);
+    for (i, r) in found.iter_mut().enumerate().skip(1) {
+        r.refine_to(&target);
+        assert!(r.width() <= target);
+        assert!(p.sign_at(r.lo()) * p.sign_at(r.hi()) < 0);
+        assert_eq!(i == 1, r.hi() < &half, "{i}: {r:?}");
+    }
+}
+
 #[test]
 fn identically_zero_and_empty_interval_are_errors() {
     assert!(matches!(
