@@ -121,7 +121,36 @@ impl SignSummary {
     }
 }
 
+/// The stack an isolation starts from: `root`, between the exact roots at
+/// its ends where `(at_lo, at_hi)` says there are (popped in order).
+fn first_stack<M: SignModel + Clone>(
+    base: &M,
+    root: Node,
+    (at_lo, at_hi): (bool, bool),
+) -> Vec<Item<M>> {
+    let end = |x: &Rat| Item::Root(RealRoot::exact(base.clone(), x.clone()));
+    let mut stack = Vec::with_capacity(3);
+    if at_hi {
+        stack.push(end(&root.hi));
+    }
+    let lo_root = at_lo.then(|| end(&root.lo));
+    stack.push(Item::Node(root));
+    stack.extend(lo_root);
+    stack
+}
+
 impl Node {
+    /// The root node `[lo, hi]` from the filter's coefficients.
+    fn filter(lo: &Rat, hi: &Rat, f: FilterBernstein) -> Node {
+        Node {
+            lo: lo.clone(),
+            hi: hi.clone(),
+            depth: 0,
+            coeffs: Coeffs::Filter(f),
+            cluster: Cluster::default(),
+        }
+    }
+
     /// `⌊−log₂(hi − lo)⌋`, within one.
     fn log_width(&self) -> i64 {
         let w = &self.hi - &self.lo;
@@ -334,23 +363,13 @@ impl RootIter<Arc<SignProbe>> {
     pub(crate) fn new(base: Arc<SignProbe>, lo: &Rat, hi: &Rat) -> RootIter {
         let poly = base.exact();
         let (first, last) = (poly.sign_at(lo), poly.sign_at(hi));
-        let mut stack = Vec::new();
-        if last == 0 {
-            stack.push(Item::Root(RealRoot::exact(base.clone(), hi.clone())));
-        }
         // The filter straight from the power basis when the ends are not
         // roots; the exact conversion otherwise (or if it cannot sign).
         let float = (first != 0 && last != 0)
             .then(|| FilterBernstein::from_power(poly, lo, hi))
             .flatten();
         let root = match float {
-            Some(f) => Node {
-                lo: lo.clone(),
-                hi: hi.clone(),
-                depth: 0,
-                coeffs: Coeffs::Filter(f),
-                cluster: Cluster::default(),
-            },
+            Some(f) => Node::filter(lo, hi, f),
             None => Node::from_exact_bernstein(
                 Bernstein::from_power(poly, lo, hi),
                 0,
@@ -358,10 +377,7 @@ impl RootIter<Arc<SignProbe>> {
                 Cluster::default(),
             ),
         };
-        stack.push(Item::Node(root));
-        if first == 0 {
-            stack.push(Item::Root(RealRoot::exact(base.clone(), lo.clone())));
-        }
+        let stack = first_stack(&base, root, (first == 0, last == 0));
         RootIter {
             base,
             stack,
@@ -391,28 +407,18 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// yielded. Every root it yields is proven.
     pub fn filtered(model: M, lo: &Rat, hi: &Rat, coeffs: &[Interval]) -> RootIter<M> {
         let f = FilterBernstein::from_intervals(coeffs);
+        let signs: Vec<Option<i32>> = f.signs().collect();
+        let zero = |s: &Option<i32>| *s == Some(0);
         // An identically zero function (every coefficient the point 0)
         // has no isolated roots to yield.
         let undecided =
-            coeffs.is_empty() || lo >= hi || !f.decided() || f.signs().all(|s| s == Some(0));
-        let mut stack = Vec::new();
-        if !undecided {
-            let zero_at = |i: usize| f.signs().nth(i) == Some(Some(0));
-            let (first, last) = (zero_at(0), zero_at(coeffs.len() - 1));
-            if last {
-                stack.push(Item::Root(RealRoot::exact(model.clone(), hi.clone())));
-            }
-            stack.push(Item::Node(Node {
-                lo: lo.clone(),
-                hi: hi.clone(),
-                depth: 0,
-                coeffs: Coeffs::Filter(f),
-                cluster: Cluster::default(),
-            }));
-            if first {
-                stack.push(Item::Root(RealRoot::exact(model.clone(), lo.clone())));
-            }
-        }
+            coeffs.is_empty() || lo >= hi || signs.contains(&None) || signs.iter().all(zero);
+        let stack = if undecided {
+            Vec::new()
+        } else {
+            let ends = (zero(&signs[0]), zero(&signs[signs.len() - 1]));
+            first_stack(&model, Node::filter(lo, hi, f), ends)
+        };
         RootIter {
             base: model,
             stack,
@@ -835,21 +841,21 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     && node.convexity() == Some(first)
                     && self.proven_squarefree()
                 {
-                    let log_width = node.log_width();
-                    let due = node
-                        .cluster
-                        .open_at
-                        .is_none_or(|at| log_width >= at + (EXCLUSION_BITS / 4) as i64);
                     if let Some(witness) = self.float_witness(&node, first) {
                         self.witnesses.push(witness);
-                    } else if due {
-                        match self.convex_exclusion(&node, first) {
-                            Exclusion::RootFree => continue,
-                            Exclusion::Witness(x, sign) => self.witnesses.push((x, sign)),
-                            Exclusion::Open if !self.filter_only => {
+                    } else {
+                        let log_width = node.log_width();
+                        let due = node
+                            .cluster
+                            .open_at
+                            .is_none_or(|at| log_width >= at + (EXCLUSION_BITS / 4) as i64);
+                        match due.then(|| self.convex_exclusion(&node, first)) {
+                            Some(Exclusion::RootFree) => continue,
+                            Some(Exclusion::Witness(x, sign)) => self.witnesses.push((x, sign)),
+                            Some(Exclusion::Open) if !self.filter_only => {
                                 node.cluster.open_at = Some(log_width)
                             }
-                            Exclusion::Open => {}
+                            _ => {}
                         }
                     }
                 }

@@ -136,11 +136,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
     }
 
-    /// Cuts a sliver `2^(−g)` of the width off the end `lo` (`from_lo`) or
-    /// `hi` (one sign evaluation); `true` if the root is in the sliver,
-    /// which is then the enclosure.
-    fn cut_sliver(&mut self, from_lo: bool, g: u64) -> bool {
-        let d = self.width().mul_pow2(-(g as i64));
+    /// Cuts a sliver `2^(−g)` of the width `w` off the end `lo`
+    /// (`from_lo`) or `hi` (one sign evaluation); `true` if the root is in
+    /// the sliver, which is then the enclosure.
+    fn cut_sliver(&mut self, from_lo: bool, g: u64, w: &Rat) -> bool {
+        let d = w.mul_pow2(-(g as i64));
         let x = if from_lo {
             &self.lo + &d
         } else {
@@ -526,7 +526,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 }
             }
             if let Some((from_lo, g)) = sliver {
-                sliver = if self.cut_sliver(from_lo, g) {
+                sliver = if self.cut_sliver(from_lo, g, &w) {
                     Some((from_lo, g * 2))
                 } else {
                     (g > 4).then_some((from_lo, g / 2))

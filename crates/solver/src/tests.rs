@@ -43,6 +43,23 @@ pub(crate) fn dyadic_node(a: &Rat, j: u64) -> (Rat, Rat) {
     (lo, hi)
 }
 
+/// The filter-only isolation of `p` on `[0, 1]` from enclosures of its
+/// Bernstein coefficients, scaled by one power of two so that the longest
+/// has about 900 bits: the roots it yields, and whether it is undecided.
+fn filtered_roots(p: &ZPoly) -> (Vec<crate::RealRoot>, bool) {
+    let b = ccd_poly::Bernstein::from_power(p, &Rat::zero(), &Rat::one());
+    let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
+    let coeffs: Vec<Interval> = b
+        .coeffs()
+        .iter()
+        .map(|c| Interval::from_int_scaled(c, top - 900))
+        .collect();
+    let model = std::sync::Arc::new(crate::SignProbe::new(p));
+    let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
+    let found = iter.by_ref().collect();
+    (found, iter.undecided())
+}
+
 fn all_roots(p: &ZPoly, lo: &Rat, hi: &Rat) -> Vec<crate::RealRoot> {
     isolate(p, lo, hi).expect("nonzero").collect()
 }
@@ -286,18 +303,9 @@ proptest! {
         for pair in found.windows(2) {
             prop_assert!(pair[0].hi() <= pair[1].lo());
         }
-        let b = ccd_poly::Bernstein::from_power(&poly, &Rat::zero(), &Rat::one());
-        let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
-        let sign = b.scale().signum();
-        let coeffs: Vec<Interval> = b.coeffs().iter().map(|c| {
-            let iv = Interval::from_int_scaled(c, top - 900);
-            if sign < 0 { -iv } else { iv }
-        }).collect();
-        let model = std::sync::Arc::new(crate::SignProbe::new(&poly));
-        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
-        let found: Vec<_> = iter.by_ref().collect();
+        let (found, undecided) = filtered_roots(&poly);
         prop_assert!(found.len() <= roots.len());
-        prop_assert!(iter.undecided() || found.len() == roots.len(), "{:?} {:?} {:?}", found, roots, coeffs);
+        prop_assert!(undecided || found.len() == roots.len(), "{:?} {:?}", found, roots);
         for (f, r) in found.iter().zip(&roots) {
             prop_assert!(f.lo() <= r && r <= f.hi(), "filtered: {} not in {:?}", r, f);
         }
@@ -367,21 +375,8 @@ fn filtered_near_miss_is_settled_when_squarefree() {
         (&pair * &linear(&Rat::from_frac(3, 4)), true),
         (&(&pair * &pair) * &linear(&Rat::from_frac(3, 4)), false),
     ] {
-        let b = ccd_poly::Bernstein::from_power(&p, &Rat::zero(), &Rat::one());
-        let coeffs: Vec<Interval> = b
-            .coeffs()
-            .iter()
-            .map(|c| {
-                Interval::from_int_scaled(
-                    c,
-                    b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64 - 900,
-                )
-            })
-            .collect();
-        let model = std::sync::Arc::new(crate::SignProbe::new(&p));
-        let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
-        let found: Vec<_> = iter.by_ref().collect();
-        assert_eq!(!iter.undecided(), settled, "{p:?}");
+        let (found, undecided) = filtered_roots(&p);
+        assert_eq!(!undecided, settled, "{p:?}");
         if settled {
             assert_eq!(found.len(), 1);
             assert!(
@@ -399,17 +394,8 @@ fn filtered_near_miss_is_settled_when_squarefree() {
 #[test]
 fn filtered_isolation_retries_after_an_open_try() {
     let p = &cluster(&Rat::from_frac(3, 13), 900, false) * &linear(&Rat::from_frac(1, 5));
-    let b = ccd_poly::Bernstein::from_power(&p, &Rat::zero(), &Rat::one());
-    let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
-    let coeffs: Vec<Interval> = b
-        .coeffs()
-        .iter()
-        .map(|c| Interval::from_int_scaled(c, top - 900))
-        .collect();
-    let model = std::sync::Arc::new(crate::SignProbe::new(&p));
-    let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
-    let found: Vec<_> = iter.by_ref().collect();
-    assert!(!iter.undecided());
+    let (found, undecided) = filtered_roots(&p);
+    assert!(!undecided);
     assert_eq!(found.len(), 1);
     assert!(found[0].lo() <= &Rat::from_frac(1, 5) && &Rat::from_frac(1, 5) <= found[0].hi());
 }
