@@ -18,42 +18,43 @@ impl Rat {
     /// assert_eq!(Rat::simplest_in(&lo, &hi), Rat::from_frac(1, 3));
     /// ```
     pub fn simplest_in(lo: &Rat, hi: &Rat) -> Rat {
+        Rat::simplest_by(lo, hi, true)
+    }
+
+    /// [`Rat::simplest_in`], with the faster routes of [`Descent`]
+    /// (`fast`) or one exact level at a time (the tests' reference).
+    fn simplest_by(lo: &Rat, hi: &Rat, fast: bool) -> Rat {
         debug_assert!(lo <= hi);
         if lo.signum() <= 0 && hi.signum() >= 0 {
             return Rat::zero();
         }
         if hi.signum() < 0 {
-            return -Rat::simplest_in(&-hi, &-lo);
+            return -Rat::simplest_by(&-hi, &-lo, fast);
         }
         // 0 < a/b <= c/d. Descend the continued fractions of both ends at
-        // once (integers only), accumulating the convergents h/k of the
-        // common prefix: x = t0 + 1/(t1 + 1/(…)), each level being
-        // `simplest(x) = t + 1/simplest(d/(c − t·d), b/(a − t·b))`.
-        let (mut a, mut b) = (lo.num.clone(), lo.den.clone());
-        let (mut c, mut d) = (hi.num.clone(), hi.den.clone());
-        let (mut h1, mut h2) = (Int::one(), Int::zero());
-        let (mut k1, mut k2) = (Int::zero(), Int::one());
+        // once: short ends in `i128` to the end, long ones many levels at a
+        // time from their leading bits, else one level exactly.
+        let mut descent = Descent {
+            ends: [
+                lo.num.clone(),
+                lo.den.clone(),
+                hi.num.clone(),
+                hi.den.clone(),
+            ],
+            convergents: [Int::one(), Int::zero(), Int::zero(), Int::one()],
+        };
         loop {
-            let (t, r) = a.div_rem_trunc(&b);
-            // The last term: lo is an integer here, or the next integer fits below hi.
-            let last = if r.is_zero() {
-                Some(t.clone())
-            } else {
-                let t1 = &t + &Int::one();
-                (&t1 * &d <= c).then_some(t1)
-            };
-            let term = last.clone().unwrap_or_else(|| t.clone());
-            let h = &(&term * &h1) + &h2;
-            let k = &(&term * &k1) + &k2;
-            if last.is_some() {
-                // Convergents are in lowest terms with k > 0.
-                return Rat { num: h, den: k };
+            if fast {
+                if let Some(r) = descent.finish_short() {
+                    return r;
+                }
+                if descent.batch() {
+                    continue;
+                }
             }
-            (h2, h1, k2, k1) = (h1, h, k1, k);
-            // Recurse on (d/(c − t·d), b/(a − t·b)): note the swap of ends.
-            let (na, nb) = (d.clone(), &c - &(&t * &d));
-            let (nc, nd) = (b, r);
-            (a, b, c, d) = (na, nb, nc, nd);
+            if let Some(r) = descent.step() {
+                return r;
+            }
         }
     }
     /// The dyadic rational `m/2^k` with the smallest `k` in `[lo, hi]`
@@ -145,6 +146,202 @@ impl Rat {
         }
         let m = at_level(top).expect("a point at the top level");
         Rat::dyadic(m, top)
+    }
+}
+
+/// The state of [`Rat::simplest_in`]'s descent on `0 < a/b <= c/d`: the
+/// ends `[a, b, c, d]` left after the common prefix `t0, t1, …` of their
+/// continued fractions, and the last two convergents `h1/k1`, `h2/k2` of
+/// that prefix as `[h1, h2, k1, k2]`. Each level is
+/// `simplest(x) = t + 1/simplest(d/(c − t·d), b/(a − t·b))` with
+/// `t = ⌊a/b⌋`: both ends take the Euclidean step `(x, y) → (y, x − t·y)`
+/// and swap roles, and the convergents `(h1, h2) → (t·h1 + h2, h1)`. The
+/// descent stops where the expansions part: `a/b` is the integer `t`, or
+/// `t + 1 <= c/d`; the answer is then `(s·h1 + h2)/(s·k1 + k2)` with `s`
+/// that last term (`t`, or `t + 1`).
+///
+/// [`Descent::step`] takes one level exactly. The two faster routes take
+/// the very same levels, so every route gives the same answer:
+/// [`Descent::finish_short`] runs them in `i128` when the ends are short,
+/// and [`Descent::batch`] proposes many levels from the ends' leading bits
+/// and keeps them only once proven on the exact ends.
+struct Descent {
+    ends: [Int; 4],
+    convergents: [Int; 4],
+}
+
+/// Ends of at most this many bits go to `i128` ([`Descent::finish_short`]);
+/// [`Descent::batch`] reads this many leading bits of longer ones.
+const SHORT_BITS: u64 = 124;
+
+/// [`Descent::batch`] proposes levels while both truncated remainders keep
+/// this many bits (their error grows with the convergents, which stay
+/// below `2^(SHORT_BITS − LEHMER_FLOOR)`).
+const LEHMER_FLOOR: u32 = 64;
+
+impl Descent {
+    /// One level exactly; the answer if the expansions part here.
+    fn step(&mut self) -> Option<Rat> {
+        let [a, b, c, d] = &self.ends;
+        let (t, r) = a.div_rem_trunc(b);
+        // The last term: lo is an integer here, or the next integer fits below hi.
+        let last = if r.is_zero() {
+            Some(t.clone())
+        } else {
+            let t1 = &t + &Int::one();
+            (&t1 * d <= *c).then_some(t1)
+        };
+        let [h1, h2, k1, k2] = &self.convergents;
+        let term = last.as_ref().unwrap_or(&t);
+        let h = &(term * h1) + h2;
+        let k = &(term * k1) + k2;
+        if last.is_some() {
+            // Convergents are in lowest terms with k > 0.
+            return Some(Rat { num: h, den: k });
+        }
+        // Recurse on (d/(c − t·d), b/(a − t·b)): note the swap of ends.
+        let (nb, nd) = (c - &(&t * d), r);
+        self.ends = [d.clone(), nb, b.clone(), nd];
+        self.convergents = [h, h1.clone(), k, k1.clone()];
+        None
+    }
+
+    /// The rest of the descent in `i128` when every end has at most
+    /// [`SHORT_BITS`] bits: the levels' product `P = Π [[t, 1], [1, 0]]`
+    /// and the last term `s` give `(h, k) = (h1, h2; k1, k2)·P·(s, 1)ᵀ`.
+    /// `None` (nothing changed) for longer ends or if a product would
+    /// overflow.
+    fn finish_short(&self) -> Option<Rat> {
+        if self.ends.iter().any(|x| x.bits() > SHORT_BITS) {
+            return None;
+        }
+        let [mut a, mut b, mut c, mut d] =
+            self.ends.each_ref().map(|x| x.to_i128().expect("short"));
+        // P, as its two columns' entries (p00, p01; p10, p11).
+        let (mut p00, mut p01, mut p10, mut p11) = (1i128, 0i128, 0i128, 1i128);
+        let (s0, s1) = loop {
+            let (t, r) = (a / b, a % b);
+            let last = if r == 0 {
+                Some(t)
+            } else {
+                // (t + 1)·d > c whenever the product overflows: c < 2^124.
+                let fits = (t + 1).checked_mul(d).is_some_and(|x| x <= c);
+                fits.then_some(t + 1)
+            };
+            if let Some(s) = last {
+                // P·(s, 1)ᵀ.
+                break (
+                    p00.checked_mul(s)?.checked_add(p01)?,
+                    p10.checked_mul(s)?.checked_add(p11)?,
+                );
+            }
+            // P ← P·[[t, 1], [1, 0]].
+            (p00, p01) = (p00.checked_mul(t)?.checked_add(p01)?, p00);
+            (p10, p11) = (p10.checked_mul(t)?.checked_add(p11)?, p10);
+            (a, b, c, d) = (d, c - t * d, b, r);
+        };
+        let [h1, h2, k1, k2] = &self.convergents;
+        let (s0, s1) = (Int::from_i128(s0), Int::from_i128(s1));
+        Some(Rat {
+            num: &(h1 * &s0) + &(h2 * &s1),
+            den: &(k1 * &s0) + &(k2 * &s1),
+        })
+    }
+
+    /// Many levels at once (Lehmer's idea) for long ends: the levels are
+    /// proposed by running the descent on the ends' leading
+    /// [`SHORT_BITS`] bits, then proven on the exact ends. With
+    /// `E = Π [[0, 1], [1, −t]]` (the Euclidean steps) each exact pair
+    /// becomes `E·(x, y)`; if both tails `x′/y′` exceed 1 (and every term
+    /// after the first is at least 1), the proposed terms are the first
+    /// terms of both expansions (a continued fraction with a tail above 1
+    /// is unique), and no level among them ends the descent: the exact
+    /// [`Descent::step`] would have taken the same ones. `false` (nothing
+    /// changed) when nothing was proposed or proven.
+    fn batch(&mut self) -> bool {
+        let [a, b, c, d] = &self.ends;
+        if a.bits().max(b.bits()).min(c.bits().max(d.bits())) <= SHORT_BITS {
+            return false;
+        }
+        // Leading bits of each pair, shifted alike (the ratio is kept).
+        let lead = |x: &Int, y: &Int| {
+            let s = x.bits().max(y.bits()).saturating_sub(SHORT_BITS);
+            (x.shr_floor(s).to_i128(), y.shr_floor(s).to_i128())
+        };
+        let ((Some(mut a), Some(mut b)), (Some(mut c), Some(mut d))) = (lead(a, b), lead(c, d))
+        else {
+            return false;
+        };
+        let mut terms: Vec<i128> = Vec::new();
+        while b >> LEHMER_FLOOR > 0 && d >> LEHMER_FLOOR > 0 {
+            // (The truncated ends need not keep their order: checked.)
+            let (t, r) = (a / b, a % b);
+            let Some(td) = t.checked_mul(d) else {
+                break;
+            };
+            if r == 0 || td.checked_add(d).is_some_and(|x| x <= c) || (t == 0 && !terms.is_empty())
+            {
+                break;
+            }
+            terms.push(t);
+            (a, b, c, d) = (d, c - td, b, r);
+        }
+        // Prove the proposal, or its first half.
+        while !terms.is_empty() {
+            if self.apply(&terms) {
+                return true;
+            }
+            terms.truncate(terms.len() / 2);
+        }
+        false
+    }
+
+    /// Takes the levels `terms` if proven on the exact ends
+    /// ([`Descent::batch`]); `false` (nothing changed) if not.
+    fn apply(&mut self, terms: &[i128]) -> bool {
+        // E = Π [[0, 1], [1, −t]] (last level leftmost) and
+        // P = Π [[t, 1], [1, 0]] (first level leftmost).
+        let (mut e, mut p) = ([1i128, 0, 0, 1], [1i128, 0, 0, 1]);
+        for &t in terms {
+            // u − t·v and t·u + v, `None` on overflow.
+            let sub = |u: i128, v: i128| t.checked_mul(v).and_then(|x| u.checked_sub(x));
+            let add = |u: i128, v: i128| t.checked_mul(u).and_then(|x| x.checked_add(v));
+            let (Some(e2), Some(e3), Some(p0), Some(p2)) = (
+                sub(e[0], e[2]),
+                sub(e[1], e[3]),
+                add(p[0], p[1]),
+                add(p[2], p[3]),
+            ) else {
+                return false;
+            };
+            e = [e[2], e[3], e2, e3];
+            p = [p0, p[0], p2, p[2]];
+        }
+        let e = e.map(Int::from_i128);
+        let tail = |x: &Int, y: &Int| {
+            let x1 = &(&e[0] * x) + &(&e[1] * y);
+            let y1 = &(&e[2] * x) + &(&e[3] * y);
+            (y1.is_positive() && x1 > y1).then_some((x1, y1))
+        };
+        let [a, b, c, d] = &self.ends;
+        let (Some((a1, b1)), Some((c1, d1))) = (tail(a, b), tail(c, d)) else {
+            return false;
+        };
+        // Each level swaps the ends' roles.
+        self.ends = if terms.len().is_multiple_of(2) {
+            [a1, b1, c1, d1]
+        } else {
+            [c1, d1, a1, b1]
+        };
+        let p = p.map(Int::from_i128);
+        let [h1, h2, k1, k2] = &self.convergents;
+        self.convergents = [
+            &(h1 * &p[0]) + &(h2 * &p[2]),
+            &(h1 * &p[1]) + &(h2 * &p[3]),
+            &(k1 * &p[0]) + &(k2 * &p[2]),
+            &(k1 * &p[1]) + &(k2 * &p[3]),
+        ];
+        true
     }
 }
 
@@ -241,6 +438,68 @@ mod tests {
             let lo = Rat::dyadic(Int::from(a), ka);
             let hi = &lo + &Rat::dyadic(Int::from(w), kw);
             prop_assert_eq!(Rat::dyadic_in(&lo, &hi), Rat::dyadic_in_search(&lo, &hi));
+        }
+    }
+
+    /// The descent one exact level at a time (the implementation before
+    /// [`Descent::finish_short`] and [`Descent::batch`]): the reference
+    /// the faster routes must agree with.
+    fn simplest_by_single_levels(lo: &Rat, hi: &Rat) -> Rat {
+        Rat::simplest_by(lo, hi, false)
+    }
+
+    /// A rational with a numerator and a denominator of up to `limbs`
+    /// 64-bit digits.
+    fn long_rat(limbs: usize) -> impl Strategy<Value = Rat> {
+        (
+            any::<bool>(),
+            proptest::collection::vec(any::<u64>(), 1..=limbs),
+            proptest::collection::vec(any::<u64>(), 1..=limbs),
+        )
+            .prop_filter_map("a zero denominator", |(neg, n, d)| {
+                Rat::new(Int::from_u64_limbs(neg, &n), Int::from_u64_limbs(false, &d))
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+        /// Short, long and very long ends, apart or sharing a long prefix of
+        /// their expansions (`hi = lo + w·2^(−shift)`): the batched descent
+        /// gives the single levels' answer.
+        #[test]
+        fn batched_descent_is_the_single_levels(
+            lo in long_rat(30),
+            w in long_rat(3),
+            shift in 0i64..3000,
+        ) {
+            let hi = &lo + &w.abs().mul_pow2(-shift);
+            prop_assert_eq!(Rat::simplest_in(&lo, &hi), simplest_by_single_levels(&lo, &hi));
+        }
+
+        /// Long ends around a rational `p/q` (a root the refinement may
+        /// meet): the descent ends inside a batch's reach, at `p/q` when
+        /// the interval is narrower than `1/q²`, else earlier.
+        #[test]
+        fn batched_descent_stops_where_the_expansions_part(
+            x in long_rat(4),
+            below in long_rat(2),
+            above in long_rat(2),
+            shift in 0i64..2000,
+            end in 0u8..3,
+        ) {
+            // `p/q` strictly inside, or at one end.
+            let (lo, hi) = (
+                if end == 1 { x.clone() } else { &x - &below.abs().mul_pow2(-shift) },
+                if end == 2 { x.clone() } else { &x + &above.abs().mul_pow2(-shift) },
+            );
+            let s = Rat::simplest_in(&lo, &hi);
+            prop_assert_eq!(&s, &simplest_by_single_levels(&lo, &hi));
+            prop_assert!(lo <= s && s <= hi);
+            let q = x.denom().bits() as i64;
+            let w = &hi - &lo;
+            if (w.numer().bits() as i64) - (w.denom().bits() as i64) < -2 * q - 2 {
+                prop_assert_eq!(s, x);
+            }
         }
     }
 
