@@ -26,7 +26,8 @@
 //! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
 //! products of the closed forms).
 
-use ccd_arith::{Dual, DwBall, Int, Interval, Jet2, Rat, RingOps};
+use ccd_arith::{Dual, DwBall, Dyadic, Int, Interval, Jet2, Rat, RingOps};
+use ccd_enclosure::BigInterval;
 use ccd_motion::CharPoly;
 use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
@@ -186,6 +187,35 @@ fn weight(q: Quantity) -> i64 {
 pub struct ClosedForm {
     f: Rc<Coefficients>,
     q: Quantity,
+}
+
+/// Precisions (bits) of [`interval_sign`]'s tries.
+const INTERVAL_SIGN_BITS: [u32; 2] = [256, 1024];
+
+/// The sign of the closed form `q` of the exact `values`, when an
+/// enclosure in multi-precision intervals ([`BigInterval`], rounded
+/// outward) excludes zero: at 256, then 1024 bits, each only while it is
+/// at most a quarter of the bits the exact products reach (`q` is
+/// homogeneous of degree `w` in the values: about `w` times their
+/// length), where the exact closed form costs little more. Values at a
+/// point next to a root cancel to far below their size, but on the long
+/// numbers of nearly degenerate scenes (`bench-perturbed-*`) rarely to
+/// below 256 bits of it. `None` when no try decides.
+fn interval_sign(values: &[Int; 5], q: Quantity) -> Option<i32> {
+    let bits = values.iter().map(Int::bits).max()?;
+    let exact_bits = bits * homogeneous_degree(q);
+    INTERVAL_SIGN_BITS
+        .into_iter()
+        .take_while(|&p| 4 * u64::from(p) <= exact_bits)
+        .find_map(|p| {
+            let enclose = |v: &Int| {
+                let d = Dyadic::from_int(v);
+                BigInterval::new(d.clone(), d, p)
+            };
+            closed_form(&values.each_ref().map(enclose), q)?
+                .sign()
+                .filter(|s| *s != 0)
+        })
 }
 
 impl ClosedForm {
@@ -390,13 +420,15 @@ impl SignModel for ClosedForm {
     /// The closed form of the values `b^n·f_k(a/b)` at `x = a/b`
     /// ([`CharPoly::at_scaled`], no derivatives; `b^(nw) > 0` does not
     /// change the sign), or of the last point's jets when `x` is that point.
+    ///
+    /// Long values are first tried in multi-precision intervals
+    /// ([`interval_sign`]): a sign proven there is the sign.
     fn sign_at(&self, x: &Rat) -> i32 {
-        if let Some((at, jets)) = &*self.f.last.borrow() {
-            if at == x {
-                return self.of(&jets.each_ref().map(|jet| jet.v.clone())).signum();
-            }
-        }
-        self.of(&self.f.f.at_scaled(x)).signum()
+        let values = match &*self.f.last.borrow() {
+            Some((at, jets)) if at == x => jets.each_ref().map(|jet| jet.v.clone()),
+            _ => self.f.f.at_scaled(x),
+        };
+        interval_sign(&values, self.q).unwrap_or_else(|| self.of(&values).signum())
     }
 
     fn exact(&self) -> &ZPoly {
@@ -430,6 +462,62 @@ mod tests {
 
     fn poly(c: &[i64]) -> ZPoly {
         ZPoly::from_i64s(c)
+    }
+
+    /// The quartic `∏ (λ − r_i)` scaled by `2^scale`, its roots `r_i`
+    /// integers, as `[a₄ … a₀]`: every quantity of a double root vanishes.
+    fn quartic_with_roots(r: [i64; 4], scale: u64) -> [Int; 5] {
+        let f = r
+            .iter()
+            .fold(ZPoly::one(), |f, &ri| &f * &ZPoly::from_i64s(&[-ri, 1]));
+        std::array::from_fn(|k| f.coeffs()[4 - k].shl(scale))
+    }
+
+    proptest! {
+        /// The multi-precision sign is the exact closed form's whenever it
+        /// decides: on long values, on values perturbed by `2^(−k)` of their
+        /// size from a quartic with a double root (where `sr0` and maybe
+        /// others cancel to that size), and never on the exact double root.
+        #[test]
+        fn interval_sign_is_the_exact_sign(
+            limbs in proptest::collection::vec(proptest::collection::vec(any::<u64>(), 1..40), 5),
+            neg in proptest::array::uniform5(any::<bool>()),
+            roots in proptest::array::uniform3(-50i64..50),
+            k in 0u64..1400,
+            q in prop_oneof![
+                Just(Quantity::Sr22), Just(Quantity::Sr20), Just(Quantity::Sr11),
+                Just(Quantity::Sr10), Just(Quantity::Sr0),
+            ],
+        ) {
+            let long: [Int; 5] = std::array::from_fn(|i| Int::from_u64_limbs(neg[i], &limbs[i]));
+            let double = quartic_with_roots([roots[0], roots[0], roots[1], roots[2]], 1500);
+            let perturbed: [Int; 5] = std::array::from_fn(|i| &double[i] + &long[i].shr_floor(k.min(long[i].bits())));
+            for values in [&long, &perturbed] {
+                let exact = closed_form(values, q).unwrap().signum();
+                if let Some(s) = interval_sign(values, q) {
+                    prop_assert_eq!(s, exact);
+                }
+            }
+            if q == Quantity::Sr0 {
+                prop_assert_eq!(interval_sign(&double, q), None);
+            }
+        }
+    }
+
+    /// Long values that do not cancel are decided without the exact form.
+    #[test]
+    fn interval_sign_decides_long_values() {
+        let values = [3i64, -7, 11, 5, -13].map(|v| Int::from(v).shl(700) + Int::from(v));
+        for q in [
+            Quantity::Sr22,
+            Quantity::Sr20,
+            Quantity::Sr11,
+            Quantity::Sr10,
+            Quantity::Sr0,
+        ] {
+            let exact = closed_form(&values, q).unwrap().signum();
+            assert_eq!(interval_sign(&values, q), Some(exact), "{q:?}");
+        }
     }
 
     /// An interval with an exact zero, huge, infinite or ordinary ends.
