@@ -434,7 +434,7 @@ impl SignModel for ClosedForm {
     /// change the sign), or of the last point's jets when `x` is that point.
     ///
     /// Long values are first tried in multi-precision intervals
-    /// ([`interval_sign`]): a sign proven there is the sign.
+    /// (`interval_sign`): a sign proven there is the sign.
     fn sign_at(&self, x: &Rat) -> i32 {
         let values = match &*self.f.last.borrow() {
             Some((at, jets)) if at == x => jets.each_ref().map(|jet| jet.v.clone()),
