@@ -171,6 +171,18 @@ impl Rat {
     }
     /// A nearby `f64` (not certified).
     pub fn to_f64(&self) -> f64 {
+        self.to_f64_short().unwrap_or_else(|| self.to_f64_scaled())
+    }
+    /// [`Rat::to_f64`] of `n/2^k` with `|n| < 2^53` and `k <= 1000` (the
+    /// ends of most enclosures): `n` and `2^(−k)` are exact `f64`s, and so
+    /// is their product, which is what the general path rounds to too.
+    fn to_f64_short(&self) -> Option<f64> {
+        let n = self.num.to_i64().filter(|n| n.unsigned_abs() < 1 << 53)?;
+        let k = self.dyadic_exponent().filter(|k| *k <= 1000)?;
+        Some(n as f64 * 2f64.powi(-(k as i32)))
+    }
+    /// [`Rat::to_f64`] in general.
+    fn to_f64_scaled(&self) -> f64 {
         let (nb, db) = (self.num.bits() as i64, self.den.bits() as i64);
         // Scale so both parts fit comfortably in f64 before dividing.
         let s = (nb - db).clamp(-1100, 1100);
@@ -352,6 +364,18 @@ mod tests {
             prop_assert_eq!(Rat::from_f64_exact(x), from_f64_by_reduction(x));
             let y = m as f64 * 2f64.powi(e);
             prop_assert_eq!(Rat::from_f64_exact(y), from_f64_by_reduction(y));
+        }
+    }
+
+    proptest! {
+        /// The short conversion is the general one, bit for bit: numerators
+        /// up to and past 2^53, levels up to and past 1000, integers.
+        #[test]
+        fn to_f64_short_is_the_scaled_path(n in any::<i64>(), bits in 0u32..56, k in 0u64..1010) {
+            let x = Rat::dyadic(Int::from(n >> (63 - bits.min(63))), k);
+            if let Some(short) = x.to_f64_short() {
+                prop_assert_eq!(short.to_bits(), x.to_f64_scaled().to_bits());
+            }
         }
     }
 

@@ -63,9 +63,42 @@ impl Rat {
         // Either order: a reversed pair would never find a level.
         let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         match (lo.dyadic_exponent(), hi.dyadic_exponent()) {
-            (Some(kl), Some(kh)) => Rat::dyadic_in_dyadic(lo, kl, hi, kh),
+            (Some(kl), Some(kh)) => Rat::dyadic_in_short(lo, kl, hi, kh)
+                .unwrap_or_else(|| Rat::dyadic_in_dyadic(lo, kl, hi, kh)),
             _ => Rat::dyadic_in_search(lo, hi),
         }
+    }
+    /// [`Rat::dyadic_in_dyadic`] in `i128` when both ends, brought to the
+    /// common level `k <= 120`, fit (the usual case: ends of a refinement
+    /// to `f64`'s resolution); the same point. `None` otherwise.
+    fn dyadic_in_short(lo: &Rat, kl: u64, hi: &Rat, kh: u64) -> Option<Rat> {
+        let k = kl.max(kh);
+        if k > 120 {
+            return None;
+        }
+        let (ln, hn) = (lo.num.to_i128()?, hi.num.to_i128()?);
+        let (l, h) = (
+            ln.checked_mul(1 << (k - kl))?,
+            hn.checked_mul(1 << (k - kh))?,
+        );
+        if l <= 0 && h >= 0 {
+            return Some(Rat::zero());
+        }
+        let (l, h, negative) = if h < 0 { (-h, -l, true) } else { (l, h, false) };
+        // The highest bit where h and l − 1 differ (0 <= l − 1 < h).
+        let good = u64::from(127 - (h ^ (l - 1)).leading_zeros());
+        if good >= k {
+            // ⌈lo⌉, as the general path: `>>` on i128 rounds down.
+            return Some(Rat::from_int(Int::from_i128(-((-ln) >> kl))));
+        }
+        let m = (h >> good) << good;
+        let m = if negative { -m } else { m };
+        // In lowest terms: m·2^(−k) with the common twos stripped.
+        let tz = u64::from(m.trailing_zeros()).min(k);
+        Some(Rat {
+            num: Int::from_i128(m >> tz),
+            den: Int::one().shl(k - tz),
+        })
     }
     /// [`Rat::dyadic_in`] for dyadic ends `lo = L/2^kl`, `hi = H/2^kh`: at
     /// the common level `k`, the multiple of the largest `2^s` in
@@ -427,6 +460,25 @@ mod tests {
                 Rat::dyadic_in_dyadic(&lo, kl, &hi, kh),
                 dyadic_in_dyadic_bisection(&lo, kl, &hi, kh)
             );
+        }
+    }
+
+    proptest! {
+        /// The `i128` path picks the general path's point: ends of up to
+        /// 100 bits at levels up to 130 (past the `i128` bound), either
+        /// sign, apart or nearly equal.
+        #[test]
+        fn dyadic_in_short_is_the_general_path(
+            a in any::<i64>(), a_hi in -(1i64 << 36)..(1i64 << 36), ka in 0u64..130,
+            w in any::<u64>(), kw in 0u64..130, near in any::<bool>(),
+        ) {
+            let lo = Rat::dyadic(&Int::from(a_hi).shl(64) + &Int::from(a), ka);
+            let w = Rat::dyadic(Int::from(w), if near { kw + 60 } else { kw });
+            let hi = &lo + &w;
+            let (kl, kh) = (lo.dyadic_exponent().unwrap(), hi.dyadic_exponent().unwrap());
+            if let Some(short) = Rat::dyadic_in_short(&lo, kl, &hi, kh) {
+                prop_assert_eq!(short, Rat::dyadic_in_dyadic(&lo, kl, &hi, kh));
+            }
         }
     }
 
