@@ -470,19 +470,11 @@ impl SignModel for ClosedForm {
 mod tests {
     use super::*;
     use ccd_subres::closed_forms;
+    use ccd_subres::fixtures::{quartic, QS};
     use proptest::prelude::*;
 
     fn poly(c: &[i64]) -> ZPoly {
         ZPoly::from_i64s(c)
-    }
-
-    /// The quartic `∏ (λ − r_i)` scaled by `2^scale`, its roots `r_i`
-    /// integers, as `[a₄ … a₀]`: every quantity of a double root vanishes.
-    fn quartic_with_roots(r: [i64; 4], scale: u64) -> [Int; 5] {
-        let f = r
-            .iter()
-            .fold(ZPoly::one(), |f, &ri| &f * &ZPoly::from_i64s(&[-ri, 1]));
-        std::array::from_fn(|k| f.coeffs()[4 - k].shl(scale))
     }
 
     proptest! {
@@ -496,13 +488,13 @@ mod tests {
             neg in proptest::array::uniform5(any::<bool>()),
             roots in proptest::array::uniform3(-50i64..50),
             k in 0u64..1400,
-            q in prop_oneof![
-                Just(Quantity::Sr22), Just(Quantity::Sr20), Just(Quantity::Sr11),
-                Just(Quantity::Sr10), Just(Quantity::Sr0),
-            ],
+            q in proptest::sample::select(QS.to_vec()),
         ) {
             let long: [Int; 5] = std::array::from_fn(|i| Int::from_u64_limbs(neg[i], &limbs[i]));
-            let double = quartic_with_roots([roots[0], roots[0], roots[1], roots[2]], 1600);
+            // 2^1600·(λ − r₀)²(λ − r₁)(λ − r₂), every coefficient an integer.
+            let r = |i: usize| Rat::from(roots[i]);
+            let double = quartic(&Rat::from_int(Int::one().shl(1600)), &[r(0), r(0), r(1), r(2)], &[])
+                .map(|c| c.numer().clone());
             let perturbed: [Int; 5] = std::array::from_fn(|i| &double[i] + &long[i].shr_floor(k.min(long[i].bits())));
             for values in [&long, &perturbed] {
                 let exact = closed_form(values, q).unwrap().signum();
@@ -520,13 +512,7 @@ mod tests {
     #[test]
     fn interval_sign_decides_long_values() {
         let values = [3i64, -7, 11, 5, -13].map(|v| Int::from(v).shl(2000) + Int::from(v));
-        for q in [
-            Quantity::Sr22,
-            Quantity::Sr20,
-            Quantity::Sr11,
-            Quantity::Sr10,
-            Quantity::Sr0,
-        ] {
+        for q in QS {
             let exact = closed_form(&values, q).unwrap().signum();
             assert_eq!(interval_sign(&values, q), Some(exact), "{q:?}");
         }

@@ -496,10 +496,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // ordinary scenes, where the slivers cost up to 3 %): the root sits
         // next to that end with a close neighbour beyond it, where Newton's
         // step only halves the error (one bit per exact evaluation). A jump
-        // that does not even halve the enclosure counts with the bisection
-        // after it (near a cluster the step may fail every time, and the
-        // bisections gain one bit each: 227 s on a fuzz mutant with an
-        // entry 1e4096, 17 s with the slivers); once slivers were cut in
+        // that does not even halve the enclosure counts too, with the
+        // bisection after it (near a cluster the step may fail every time,
+        // and the bisections gain one bit each); once slivers were cut in
         // this call, two such jumps start them again.
         // Slivers `2^(−g)` of the width at that end are then cut off, `g`
         // doubling while the root is in them and halving while not (one
@@ -527,10 +526,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
                     (Some(end), _) => (Some(end), 1),
                     (None, _) => (None, 0),
                 };
-                if let (Some(from_lo), n) = stuck {
-                    if n >= if slivered { 2 } else { 6 } {
+                match stuck {
+                    (Some(from_lo), n) if n >= if slivered { 2 } else { 6 } => {
                         (sliver, stuck, slivered) = (Some((from_lo, 16)), (None, 0), true);
                     }
+                    _ => {}
                 }
             }
             if let Some((from_lo, g)) = sliver {

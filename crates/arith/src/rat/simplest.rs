@@ -212,6 +212,32 @@ const SHORT_BITS: u64 = 124;
 /// below `2^(SHORT_BITS − LEHMER_FLOOR)`).
 const LEHMER_FLOOR: u32 = 64;
 
+/// One level of [`Descent`] on ends in `i128`.
+enum Level {
+    /// The expansions part here; the last term.
+    Last(i128),
+    /// A common term; the ends have taken its step.
+    Term(i128),
+}
+
+/// One level of [`Descent::step`] on `[a, b, c, d]` in `i128` (`b > 0`);
+/// `None` if `t·d` overflows (the truncated ends of [`Descent::batch`]
+/// need not keep their order). `(t + 1)·d` overflowing means it exceeds
+/// `c`.
+fn short_level(ends: &mut [i128; 4]) -> Option<Level> {
+    let [a, b, c, d] = *ends;
+    let (t, r) = (a / b, a % b);
+    let td = t.checked_mul(d)?;
+    if r == 0 {
+        return Some(Level::Last(t));
+    }
+    if td.checked_add(d).is_some_and(|x| x <= c) {
+        return Some(Level::Last(t + 1));
+    }
+    *ends = [d, c - td, b, r];
+    Some(Level::Term(t))
+}
+
 impl Descent {
     /// One level exactly; the answer if the expansions part here.
     fn step(&mut self) -> Option<Rat> {
@@ -248,30 +274,24 @@ impl Descent {
         if self.ends.iter().any(|x| x.bits() > SHORT_BITS) {
             return None;
         }
-        let [mut a, mut b, mut c, mut d] =
-            self.ends.each_ref().map(|x| x.to_i128().expect("short"));
+        let mut ends = self.ends.each_ref().map(|x| x.to_i128().expect("short"));
         // P, as its two columns' entries (p00, p01; p10, p11).
         let (mut p00, mut p01, mut p10, mut p11) = (1i128, 0i128, 0i128, 1i128);
         let (s0, s1) = loop {
-            let (t, r) = (a / b, a % b);
-            let last = if r == 0 {
-                Some(t)
-            } else {
-                // (t + 1)·d > c whenever the product overflows: c < 2^124.
-                let fits = (t + 1).checked_mul(d).is_some_and(|x| x <= c);
-                fits.then_some(t + 1)
-            };
-            if let Some(s) = last {
+            match short_level(&mut ends)? {
                 // P·(s, 1)ᵀ.
-                break (
-                    p00.checked_mul(s)?.checked_add(p01)?,
-                    p10.checked_mul(s)?.checked_add(p11)?,
-                );
+                Level::Last(s) => {
+                    break (
+                        p00.checked_mul(s)?.checked_add(p01)?,
+                        p10.checked_mul(s)?.checked_add(p11)?,
+                    )
+                }
+                // P ← P·[[t, 1], [1, 0]].
+                Level::Term(t) => {
+                    (p00, p01) = (p00.checked_mul(t)?.checked_add(p01)?, p00);
+                    (p10, p11) = (p10.checked_mul(t)?.checked_add(p11)?, p10);
+                }
             }
-            // P ← P·[[t, 1], [1, 0]].
-            (p00, p01) = (p00.checked_mul(t)?.checked_add(p01)?, p00);
-            (p10, p11) = (p10.checked_mul(t)?.checked_add(p11)?, p10);
-            (a, b, c, d) = (d, c - t * d, b, r);
         };
         let [h1, h2, k1, k2] = &self.convergents;
         let (s0, s1) = (Int::from_i128(s0), Int::from_i128(s1));
@@ -301,23 +321,16 @@ impl Descent {
             let s = x.bits().max(y.bits()).saturating_sub(SHORT_BITS);
             (x.shr_floor(s).to_i128(), y.shr_floor(s).to_i128())
         };
-        let ((Some(mut a), Some(mut b)), (Some(mut c), Some(mut d))) = (lead(a, b), lead(c, d))
-        else {
+        let ((Some(a), Some(b)), (Some(c), Some(d))) = (lead(a, b), lead(c, d)) else {
             return false;
         };
+        let mut ends = [a, b, c, d];
         let mut terms: Vec<i128> = Vec::new();
-        while b >> LEHMER_FLOOR > 0 && d >> LEHMER_FLOOR > 0 {
-            // (The truncated ends need not keep their order: checked.)
-            let (t, r) = (a / b, a % b);
-            let Some(td) = t.checked_mul(d) else {
-                break;
-            };
-            if r == 0 || td.checked_add(d).is_some_and(|x| x <= c) || (t == 0 && !terms.is_empty())
-            {
-                break;
+        while ends[1] >> LEHMER_FLOOR > 0 && ends[3] >> LEHMER_FLOOR > 0 {
+            match short_level(&mut ends) {
+                Some(Level::Term(t)) if t > 0 || terms.is_empty() => terms.push(t),
+                _ => break,
             }
-            terms.push(t);
-            (a, b, c, d) = (d, c - td, b, r);
         }
         // Prove the proposal, or its first half.
         while !terms.is_empty() {
