@@ -1,5 +1,5 @@
 //! [`Dyadic`]: exact dyadic rationals `m·2^e`, the numbers of the
-//! certified enclosures (`ccd_enclosure::BigInterval`'s ends) and of the
+//! certified enclosures ([`BigInterval`](crate::BigInterval)'s ends) and of the
 //! solver's exact convexity test: sums, differences and products stay
 //! dyadic and need no gcd, unlike [`Rat`]; the rounding operations
 //! ([`Dyadic::round`], [`Dyadic::div`]) are for outward-rounded intervals.

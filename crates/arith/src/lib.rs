@@ -22,6 +22,7 @@ mod backend_gmp;
 ))]
 mod backend_num;
 mod backend_refops;
+mod big_interval;
 mod convert;
 mod descartes;
 mod dual;
@@ -35,6 +36,7 @@ mod ring;
 mod small;
 
 pub use approx::Approx;
+pub use big_interval::BigInterval;
 pub use convert::NotFinite;
 pub use descartes::sign_variations;
 pub use dual::Dual;

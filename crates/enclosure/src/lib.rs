@@ -10,8 +10,9 @@
 //!
 //! * [`trig`]: rigorous sin/cos (Machin's π, Cody–Waite or multi-precision
 //!   reduction, Taylor with Lagrange remainder);
-//! * [`dyadic`]: [`BigInterval`], intervals with dyadic ends rounded outward
-//!   to a chosen number of bits, for escalation when `f64` cannot decide;
+//! * [`BigInterval`] (from `ccd-arith`, where the solver's sign tiers use
+//!   it too): intervals with dyadic ends rounded outward to a chosen
+//!   number of bits, for escalation when `f64` cannot decide;
 //! * [`dual`]: [`Dual`] numbers, so the same generic `ccd-quadric` and
 //!   `ccd-subres` code gives each quantity and its derivative in t;
 //! * [`placement`]: the bodies' placements over any of these number types;
@@ -20,14 +21,13 @@
 #![warn(missing_docs)]
 
 pub mod dual;
-pub mod dyadic;
 pub mod isolate;
 pub mod placement;
 pub mod real;
 pub mod trig;
 
+pub use ccd_arith::{BigInterval, Dyadic};
 pub use dual::Dual;
-pub use dyadic::{BigInterval, Dyadic};
 pub use placement::{centred_quadrics, invariants_at, quadric_at};
 pub use real::Real;
 pub use trig::{sin_cos, Trig};

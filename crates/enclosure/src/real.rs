@@ -2,8 +2,8 @@
 //! Newton, sign reading) need from an interval type, implemented for the
 //! fast `f64` [`Interval`] and the escalation type [`BigInterval`].
 
-use crate::dyadic::{BigInterval, Dyadic};
 use crate::trig::{half_pi_cody_waite, pi_enclosure};
+use ccd_arith::{BigInterval, Dyadic};
 use ccd_arith::{Int, Interval, Rat, RingOps};
 use std::sync::OnceLock;
 

@@ -27,8 +27,8 @@
 //!   since between consecutive such points both are monotone. Intervals
 //!   longer than about 2π get `[−1, 1]`.
 
-use crate::dyadic::{BigInterval, Dyadic};
 use crate::real::Real;
+use ccd_arith::{BigInterval, Dyadic};
 use ccd_arith::{Int, Interval, Rat, RingOps};
 use std::sync::{Mutex, OnceLock};
 

@@ -16,10 +16,10 @@ use ccd_algorithm::{
 use ccd_arith::{Int, Interval, Rat};
 use ccd_classify::{classify, SignData};
 use ccd_contact::{enclose, Case, Goal};
-use ccd_enclosure::dyadic::BigInterval;
 use ccd_enclosure::isolate::{isolate, refine, width_rat, Found as Isolated, Limits, Problem};
 use ccd_enclosure::placement::invariants_at;
 use ccd_enclosure::real::Real;
+use ccd_enclosure::BigInterval;
 use ccd_motion::{Body, Motion};
 use ccd_subres::{closed_form, Quantity};
 use ccd_timeline::{Geometry, Instant, Path, State, Stats};

@@ -1,6 +1,6 @@
 //! [`BigInterval`]: closed intervals with dyadic endpoints `m·2^e` rounded
 //! outward to a chosen number of significant bits — the escalation type
-//! used when an `f64` [`Interval`](ccd_arith::Interval) is too wide to
+//! used when an `f64` [`Interval`](crate::Interval) is too wide to
 //! decide a sign or to reach the requested width of an enclosure.
 //!
 //! Every operation computes the exact dyadic result of the endpoint
@@ -12,8 +12,7 @@
 //! marks an exact value (small constants): no rounding at all; a binary
 //! operation works at the larger precision of its operands.
 
-pub use ccd_arith::Dyadic;
-use ccd_arith::{Int, Rat, RingOps};
+use crate::{Dyadic, Int, Rat, RingOps};
 use std::cmp::Ordering;
 
 /// Precision used for divisions of exact (`prec == 0`) operands.
@@ -426,7 +425,7 @@ mod tests {
     /// exponent, not only the value).
     mod reference {
         use super::super::{BigInterval, Dyadic};
-        use ccd_arith::Int;
+        use crate::Int;
         use std::cmp::Ordering;
 
         fn aligned(a: &Dyadic, o: &Dyadic) -> (Int, Int, i64) {
@@ -554,7 +553,7 @@ mod tests {
                 up,
             )
         }
-        pub fn from_rat(q: &ccd_arith::Rat, prec: u32) -> (Dyadic, Dyadic) {
+        pub fn from_rat(q: &crate::Rat, prec: u32) -> (Dyadic, Dyadic) {
             let bits = prec.max(64);
             let s = bits as i64 + 2 + q.denom().bits() as i64 - q.numer().bits() as i64;
             (
