@@ -189,6 +189,18 @@ impl BigInterval {
             prec: self.prec.max(o.prec),
         })
     }
+    /// `self · 2^k`, exact (the ends' exponents move by `k`).
+    pub fn mul_pow2(&self, k: i64) -> BigInterval {
+        let shift = |d: &Dyadic| Dyadic {
+            m: d.m.clone(),
+            e: d.e + k,
+        };
+        BigInterval {
+            lo: shift(&self.lo),
+            hi: shift(&self.hi),
+            prec: self.prec,
+        }
+    }
     /// A nearby `f64` of the midpoint (not certified).
     pub fn approx(&self) -> f64 {
         0.5 * (self.lo.to_f64() + self.hi.to_f64())

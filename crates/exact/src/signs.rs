@@ -26,8 +26,7 @@
 //! `sr0` alone is formed as a polynomial ([`closed_form`], 13 of the 17
 //! products of the closed forms).
 
-use ccd_arith::{Dual, DwBall, Dyadic, Int, Interval, Jet2, Rat, RingOps};
-use ccd_enclosure::BigInterval;
+use ccd_arith::{BigInterval, Dual, DwBall, Dyadic, Int, Interval, Jet2, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
@@ -238,16 +237,19 @@ impl ClosedForm {
 
     /// `(F_k, G_k) = (b^n·f_k(x), b^n·f_k′(x))` for `x = a/b` with the
     /// common `n` (each `f_k` evaluated homogeneously, then brought to
-    /// degree `n`), so that `Q(F + εG) = b^(nw)·(q(x) + ε·q′(x))`.
-    fn jets(&self, x: &Rat) -> [Dual<Int>; 5] {
+    /// degree `n`), so that `Q(F + εG) = b^(nw)·(q(x) + ε·q′(x))`; handed
+    /// to `read`, and cached for the last `x` (shared by the closed forms
+    /// of one `f`; `read` must not ask for jets itself).
+    fn with_jets<T>(&self, x: &Rat, read: impl FnOnce(&[Dual<Int>; 5]) -> T) -> T {
         if let Some((at, jets)) = &*self.f.last.borrow() {
             if at == x {
-                return jets.clone();
+                return read(jets);
             }
         }
         let jets = self.compute_jets(x);
-        *self.f.last.borrow_mut() = Some((x.clone(), jets.clone()));
-        jets
+        let out = read(&jets);
+        *self.f.last.borrow_mut() = Some((x.clone(), jets));
+        out
     }
 
     fn compute_jets(&self, x: &Rat) -> [Dual<Int>; 5] {
@@ -342,7 +344,7 @@ impl SignModel for ClosedForm {
     fn exact_jet_at(&self, m: &Rat) -> ExactJet {
         let j = m.dyadic_exponent().expect("a dyadic point") as i64;
         let w = weight(self.q);
-        let q = self.of(&self.jets(m));
+        let q = self.with_jets(m, |jets| self.of(jets));
         let scale = j * self.f.f.degree() as i64 * w + self.f.shift * w;
         ExactJet {
             value: q.v,
@@ -394,11 +396,44 @@ impl SignModel for ClosedForm {
             v: q.v.mul_pow2(undo),
             d: q.d.mul_pow2(undo),
         };
-        (q.v.is_known() && q.d.is_known()).then(|| BallJet {
+        let scale = j * self.f.f.degree() as i64 * weight(self.q) + self.f.shift * weight(self.q);
+        (q.v.is_known() && q.d.is_known()).then_some(BallJet {
             value: q.v,
             slope: q.d,
-            slope_exp: j * self.f.f.degree() as i64 * weight(self.q)
-                + self.f.shift * weight(self.q),
+            value_exp: scale,
+            slope_exp: scale,
+        })
+    }
+
+    /// The closed form over dual numbers of multi-precision intervals
+    /// ([`BigInterval`], `prec` bits) of the exact jets `(F_k, G_k)` at `m`
+    /// (cached for [`SignModel::exact_jet_at`] at the same point): for long
+    /// values (at least [`INTERVAL_SIGN_MIN_BITS`], below which the exact
+    /// closed form costs about as much), out of `f64`'s exponent range or
+    /// cancelling past the double-word balls' 106 bits.
+    fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
+        let j = m.dyadic_exponent()? as i64;
+        let q = self.with_jets(m, |jets| {
+            let bits = jets.iter().map(|d| d.v.bits().max(d.d.bits())).max()?;
+            if bits < INTERVAL_SIGN_MIN_BITS || u64::from(prec) * 4 > bits * weight(self.q) as u64 {
+                return None;
+            }
+            let enclose = |v: &Int| {
+                let d = Dyadic::from_int(v);
+                BigInterval::new(d.clone(), d, prec)
+            };
+            Some(self.of(&jets.each_ref().map(|d| Dual {
+                v: enclose(&d.v),
+                d: enclose(&d.d),
+            })))
+        })?;
+        let w = weight(self.q);
+        let scale = j * self.f.f.degree() as i64 * w + self.f.shift * w;
+        Some(BallJet {
+            value: q.v.mul_pow2(-scale),
+            slope: q.d.mul_pow2(-scale),
+            value_exp: scale,
+            slope_exp: scale,
         })
     }
 
@@ -655,6 +690,42 @@ mod tests {
                     let second = exact.derivative().derivative().eval_rat(&m);
                     prop_assert!(holds(model.enclose_second(point), sigma(second)));
                 }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The multi-precision jet of long values holds `σ·q(m)` and
+        /// `σ·q′(m)` on the exact jet's exponents, far past `f64`'s range
+        /// (coefficients lifted by 1600–2600 bits), at any precision it
+        /// offers; short values get none.
+        #[test]
+        fn big_jets_hold_the_exact_jets(
+            raw in proptest::collection::vec(proptest::collection::vec(-40i64..40, 1..5), 5),
+            a in -64i64..64, j in 0u64..8, lift in 1600u64..2600, prec in 64u32..600,
+            short in any::<bool>(),
+        ) {
+            let lift = if short { 0 } else { lift };
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+                ZPoly::new(poly(&raw[k]).coeffs().iter().map(|c| c.shl(lift * (4 - k as u64))).collect())
+            });
+            let f = Rc::new(Coefficients::new(CharPoly { coeffs: coeffs.clone() }));
+            let m = Rat::dyadic(Int::from(a), j);
+            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                let model = model(&f, q);
+                let exact = model.exact_jet_at(&m);
+                let Some(big) = model.big_jet_at(&m, prec) else {
+                    continue;
+                };
+                prop_assert!(!short);
+                prop_assert_eq!((big.value_exp, big.slope_exp), (exact.value_exp, exact.slope_exp));
+                let holds = |b: &BigInterval, v: &Int, e: i64| {
+                    let r = Rat::from_int(v.clone()).mul_pow2(-e);
+                    b.lo_rat() <= r && r <= b.hi_rat()
+                };
+                prop_assert!(holds(&big.value, &exact.value, exact.value_exp));
+                prop_assert!(holds(&big.slope, &exact.slope, exact.slope_exp));
             }
         }
     }

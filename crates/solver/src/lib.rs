@@ -17,12 +17,14 @@
 
 #![warn(missing_docs)]
 
+mod ball;
 mod filter_bernstein;
 mod isolate;
 mod model;
 mod root;
 mod scaled;
 
+pub use ball::JetBall;
 pub use isolate::{RootIter, MAX_EXACT_WORK};
 pub use model::{ball_horner, ball_view, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH};
 pub use root::RealRoot;

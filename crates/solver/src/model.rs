@@ -4,7 +4,7 @@
 //! explicit polynomial; [`ExactJet`], exact values at a dyadic point.
 
 use crate::scaled::ScaledPoly;
-use ccd_arith::{Dual, DwBall, Int, Interval, Rat, RingOps};
+use ccd_arith::{BigInterval, Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::{Residues, ZPoly};
 use std::sync::{Arc, OnceLock};
 
@@ -95,19 +95,22 @@ pub fn ball_view(p: &ZPoly, shift: i64) -> Vec<DwBall> {
         .collect()
 }
 
-/// Double-word enclosures of `σ·q(m)` and `σ·q′(m)` at a dyadic point
-/// ([`SignModel::ball_jet_at`]): the scale `σ` of [`ExactJet`], so that
-/// `value` holds `ExactJet::value·2^(−value_exp)` and `slope` holds
-/// `ExactJet::slope·2^(−slope_exp)`.
+/// Enclosures of `σ·q(m)` and `σ·q′(m)` at a dyadic point: the scale `σ`
+/// of [`ExactJet`], so that `value` holds `ExactJet::value·2^(−value_exp)`
+/// and `slope` holds `ExactJet::slope·2^(−slope_exp)`. In double-word
+/// balls ([`SignModel::ball_jet_at`], the default `B`) or in
+/// multi-precision intervals ([`SignModel::big_jet_at`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BallJet {
+pub struct BallJet<B = DwBall> {
     /// Encloses `σ·q(m)`.
-    pub value: DwBall,
+    pub value: B,
     /// Encloses `σ·q′(m)`.
-    pub slope: DwBall,
-    /// [`ExactJet::slope_exp`]: `σ·q′(m)·2^slope_exp` is an integer (which
-    /// lets [`RealRoot`](crate::RealRoot) tell when the ball pins down the
-    /// exact jet's `f64` enclosure).
+    pub slope: B,
+    /// [`ExactJet::value_exp`]: `σ·q(m)·2^value_exp` is an integer.
+    pub value_exp: i64,
+    /// [`ExactJet::slope_exp`]: `σ·q′(m)·2^slope_exp` is an integer (these
+    /// let [`RealRoot`](crate::RealRoot) tell when the ball pins down the
+    /// exact jet's `f64` enclosures).
     pub slope_exp: i64,
 }
 
@@ -136,6 +139,15 @@ pub trait SignModel {
     /// [`SignModel::exact_jet_at`], which it needs only when these do not
     /// decide. `None` (the default) when the model has no such view.
     fn ball_jet_at(&self, _m: &Rat) -> Option<BallJet> {
+        None
+    }
+    /// `σ·q(m)` and `σ·q′(m)` in multi-precision intervals of about `prec`
+    /// bits, for a dyadic `m`: what [`RealRoot`](crate::RealRoot) tries
+    /// when the double-word balls do not decide (values out of `f64`'s
+    /// range, or cancelling below its 106 bits) and before the exact jet.
+    /// `None` (the default) when the model has no such view or it would
+    /// cost about as much as the exact jet.
+    fn big_jet_at(&self, _m: &Rat, _prec: u32) -> Option<BallJet<BigInterval>> {
         None
     }
     /// `(σ·q(m), σ·q′(m))` enclosed, for a dyadic `m`.
@@ -192,6 +204,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     }
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
         (**self).ball_jet_at(m)
+    }
+    fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
+        (**self).big_jet_at(m, prec)
     }
     fn value_and_slope_at(&self, m: &Rat) -> (Interval, Interval) {
         (**self).value_and_slope_at(m)
@@ -253,6 +268,7 @@ impl SignModel for SignProbe {
         (jet.v.is_known() && jet.d.is_known()).then_some(BallJet {
             value: jet.v,
             slope: jet.d,
+            value_exp: shift + k * n,
             slope_exp: shift + k * (n - 1).max(0),
         })
     }

@@ -3,8 +3,9 @@
 //! interval with exact rational ends; refinable to any width, and able to
 //! decide the exact sign of any polynomial at it.
 
+use crate::ball::{JetBall, Scaled};
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
-use ccd_arith::{sign_variations, DwBall, Int, Interval, Rat, RingOps};
+use ccd_arith::{sign_variations, Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
@@ -37,19 +38,88 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
         .max(neg_log2(w) + 2)
 }
 
+/// The precision of [`RealRoot::sign_with`]'s multi-precision round
+/// ([`SignModel::big_jet_at`]): the round needs `q(m)` and `q′(m)` only to
+/// a few bits past the Taylor remainder, and values that cancel further
+/// take the exact jet.
+const SIGN_BALL_BITS: u32 = 128;
+
+/// The bits beyond twice the enclosure's of the multi-precision Newton
+/// jump ([`RealRoot::exact_newton_jump`]).
+const NEWTON_BALL_MARGIN: u32 = 128;
+
 /// `1 ± 2^(−50)`: past the roundings of a product of a few `f64` factors
 /// (each off by at most `2^(−53)` relatively), upwards and downwards.
 const UP4: f64 = 1.0 + 4.0 * f64::EPSILON;
 const DOWN4: f64 = 1.0 - 4.0 * f64::EPSILON;
+
+/// The `f64` enclosure of the exact `σ·q(m)` (or `σ·q′(m)`), an integer
+/// `N` over `2^exp` ([`ExactJet::enclose`]), when the ball of it pins that
+/// enclosure down: every integer the ball allows has the same sign and the
+/// same leading 64 bits, which is all `Interval::from_int_scaled` reads.
+fn pinned<B: JetBall>(ball: &B, exp: i64) -> Option<Interval> {
+    let (lo, hi) = ball.end_points()?;
+    let (n_min, n_max) = (-(-lo.mul_pow2(exp)).floor(), hi.mul_pow2(exp).floor());
+    (n_min.signum() == n_max.signum() && n_min.top_bits() == n_max.top_bits())
+        .then(|| Interval::from_int_scaled(&n_min, exp))
+}
+
+/// The Taylor remainder `ρ = sup|q″(I)|·r²/2` of one ball round
+/// ([`RealRoot::ball_round`]) and the ends of the `f64` test's remainder
+/// `[min(0, q″⁻), max(0, q″⁺)]·r²/2`, each rounded to the safe side.
+struct Remainders {
+    /// `ρ` rounded up.
+    up: Scaled,
+    /// `ρ` rounded down.
+    down: Scaled,
+    /// `−min(0, q″⁻)·r²/2 ≥ 0`, rounded toward zero.
+    minus_lo: Scaled,
+    /// `−max(0, q″⁺)·r²/2 ≤ 0`, rounded toward zero.
+    minus_hi: Scaled,
+}
+
+impl Remainders {
+    /// From `bound ≥ sup|q″(I)|`, `r_dn ≤ r ≤ r_up` and `second ⊇ q″(I)`:
+    /// with `wide` (balls that reach past `f64`'s exponent range) as
+    /// [`Scaled`] products, which keep their size however small; else in
+    /// `f64`, where an underflow only loses what is far below any
+    /// double-word ball's value (at least `2^(−900)`).
+    fn new(bound: f64, r_up: f64, r_dn: f64, second: Interval, wide: bool) -> Remainders {
+        let (lo, hi) = (-second.lo.min(0.0), -second.hi.max(0.0));
+        if wide {
+            let (r_up, r_dn) = (Scaled::new(r_up), Scaled::new(r_dn));
+            let half_sq_up = r_up.times(r_up).times(Scaled::new(0.5 * UP4));
+            let half_sq_dn = r_dn.times(r_dn).times(Scaled::new(0.5 * DOWN4));
+            let down = |x: f64| Scaled::new(x).times(half_sq_dn).times(Scaled::new(DOWN4));
+            return Remainders {
+                up: Scaled::new(bound).times(half_sq_up).times(Scaled::new(UP4)),
+                down: down(bound),
+                minus_lo: down(lo),
+                minus_hi: down(hi),
+            };
+        }
+        // r²/2 rounded up and down (three roundings, and underflow).
+        let half_sq_up = r_up * r_up * 0.5 * UP4 + f64::MIN_POSITIVE;
+        let half_sq_dn = (r_dn * r_dn * 0.5 * DOWN4 - f64::MIN_POSITIVE).max(0.0);
+        Remainders {
+            up: Scaled::exact(bound * half_sq_up * UP4 + f64::MIN_POSITIVE),
+            down: Scaled::exact(bound * half_sq_dn * DOWN4),
+            minus_lo: Scaled::exact(((lo * half_sq_dn) * DOWN4 - f64::MIN_POSITIVE).max(0.0)),
+            minus_hi: Scaled::exact(((hi * half_sq_dn) * DOWN4 + f64::MIN_POSITIVE).min(0.0)),
+        }
+    }
+}
 
 /// What one round of Taylor tests from balls found
 /// ([`RealRoot::ball_round`]).
 enum BallRound {
     /// The sign of `q(α)`, proven.
     Sign(i32),
-    /// Neither exact Taylor test decides this round; `value_nonzero` when
-    /// `q(m) ≠ 0` is proven too (the zero test's trigger in round 0).
-    Open { value_nonzero: bool },
+    /// Neither exact Taylor test decides this round; `value_zero` when
+    /// the balls prove whether the `f64` enclosure of the exact `q(m)`
+    /// holds zero (the zero test's trigger in round 0), `None` when they
+    /// cannot tell.
+    Open { value_zero: Option<bool> },
 }
 
 /// What a float Newton jump achieved.
@@ -247,13 +317,29 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `D = d/2^e` and `T = max(v, s + e)`, and only the remainder is
     /// enclosed in `f64` (`p″` over `I`, times `D²`); where that does not
     /// decide, `p(x)` is evaluated exactly.
+    ///
+    /// The same step is first tried from the model's double-word jet, then
+    /// from its multi-precision one at about twice the enclosure's bits
+    /// ([`RealRoot::ball_newton_jump`]); the exact jet is formed only when
+    /// neither pins the step down.
     fn exact_newton_jump(&mut self, target: &Rat, w: &Rat) -> bool {
         let quarter = w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
         let second = self.base.enclose_second(self.enclosure());
-        if let Some(done) = self.ball_newton_jump(target, w, &m, second) {
-            return done;
+        if let Some(jet) = self.base.ball_jet_at(&m) {
+            if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
+                return done;
+            }
+        }
+        // The multi-precision tier: about twice the enclosure's bits (the
+        // value `p(m)` cancels to about `p′·w`, and the step must be
+        // pinned to `w²`), past the 106 of the double-word balls.
+        let bits = (w.denom().bits() as i64 - w.numer().bits() as i64).max(0) as u32;
+        if let Some(jet) = self.base.big_jet_at(&m, 2 * bits + NEWTON_BALL_MARGIN) {
+            if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
+                return done;
+            }
         }
         let jet = self.base.exact_jet_at(&m);
         if jet.slope.is_zero() {
@@ -307,8 +393,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
             .unwrap_or_else(|| self.base.sign_at(x))
     }
 
-    /// [`RealRoot::exact_newton_jump`] from the model's double-word jet
-    /// ([`SignModel::ball_jet_at`]), when the balls pin down everything the
+    /// [`RealRoot::exact_newton_jump`] from a ball jet of the model
+    /// (double-word, [`SignModel::ball_jet_at`], or multi-precision,
+    /// [`SignModel::big_jet_at`]), when the balls pin down everything the
     /// exact jet would give: the slope is nonzero, its `f64` enclosure (the
     /// one the exact slope rounds to: every integer the ball allows has the
     /// same leading 64 bits), hence the same `k`, and `X` (both ends of the
@@ -316,28 +403,19 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// then the exact step's, and each sign is proven by a ball or, where
     /// that does not decide, exactly: the very same step, without exact
     /// arithmetic on the closed form. `None` when anything is left open.
-    fn ball_newton_jump(
+    fn ball_newton_jump<B: JetBall>(
         &mut self,
         target: &Rat,
         w: &Rat,
         m: &Rat,
         second: Interval,
+        jet: &BallJet<B>,
     ) -> Option<bool> {
-        let jet = self.base.ball_jet_at(m)?;
-        jet.slope.sign().filter(|s| *s != 0)?;
-        // The exact slope S·2^(−s) lies in the ball: S between two integers.
-        let (lo, hi) = jet.slope.ends()?;
-        let (s_min, s_max) = (
-            -(-lo.mul_pow2(jet.slope_exp)).floor(),
-            hi.mul_pow2(jet.slope_exp).floor(),
-        );
-        if s_min.signum() != s_max.signum() || s_min.top_bits() != s_max.top_bits() {
-            return None;
-        }
-        let slope = Interval::from_int_scaled(&s_min, jet.slope_exp);
+        jet.slope.sign_of().filter(|s| *s != 0)?;
+        let slope = pinned(&jet.slope, jet.slope_exp)?;
         let k = newton_exponent(w, target, slope, second);
         // X = ⌊2^k·m − 2^k·δ⌋ with δ = σq(m)/σq′(m) in a ball.
-        let (dl, dh) = jet.value.div(&jet.slope).mul_pow2(k).ends()?;
+        let (dl, dh) = jet.value.quotient(&jet.slope)?.scaled(k).end_points()?;
         let a = m.mul_pow2(k);
         let x_scaled = (&a - &dh).floor();
         if x_scaled != (&a - &dl).floor() {
@@ -345,13 +423,13 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
         let ball_sign = |root: &RealRoot<M>, x: &Rat| {
             let d = x - m;
-            let linear = jet.value.plus(&jet.slope.times(&DwBall::from_rat(&d)));
+            let linear = jet.value.plus(&jet.slope.times(&jet.value.enclose_rat(&d)));
             let dd = Interval::from_rat(&d);
-            let remainder = DwBall::from_interval(second * dd.square() * Interval::point(0.5));
+            let remainder = second * dd.square() * Interval::point(0.5);
             Some(
                 linear
-                    .plus(&remainder)
-                    .sign()
+                    .plus_interval(remainder)
+                    .and_then(|b| b.sign_of())
                     .filter(|s| *s != 0)
                     .unwrap_or_else(|| root.cut_sign(x)),
             )
@@ -363,62 +441,87 @@ impl<M: SignModel + Clone> RealRoot<M> {
         ))
     }
 
-    /// One round of [`RealRoot::sign_with`]'s Taylor tests from
-    /// double-word balls of `q(m)` and `q′(m)` instead of exact values:
-    /// [`BallRound::Sign`] when the symmetric form `q(m) + q′(m)·(I − m) ±
-    /// sup|q″(I)|·r²/2` decides over the balls (then the exact form decides
-    /// too, with the same sign: its linear part lies in the balls and its
-    /// remainder is no larger), [`BallRound::Open`] when the balls prove
-    /// that neither exact test would decide this round (and whether
-    /// `q(m) ≠ 0`), `None` when they cannot tell (the exact jet is needed).
+    /// One round of [`RealRoot::sign_with`]'s Taylor tests from balls of
+    /// `q(m)` and `q′(m)` (double-word or multi-precision,
+    /// [`SignModel::ball_jet_at`], [`SignModel::big_jet_at`]) instead of
+    /// exact values: [`BallRound::Sign`] when the symmetric form `q(m) +
+    /// q′(m)·(I − m) ± sup|q″(I)|·r²/2` decides over the balls (then the
+    /// exact form decides too, with the same sign: its linear part lies in
+    /// the balls and its remainder is no larger), or when the balls pin
+    /// down the `f64` enclosures of the exact values and the exact path's
+    /// `f64` test on them decides; [`BallRound::Open`] when the balls prove
+    /// that neither exact test would decide this round (and, where they
+    /// can, whether the `f64` enclosure of `q(m)` holds zero); `None` when
+    /// they cannot tell (the exact jet is needed).
     ///
     /// With `L = q(m) + q′(m)·(I − m)` over `I` (`m ∈ I`, so `I − m ∋ 0`),
     /// `ρ = sup|q″(I)|·r²/2` and `r = max|I − m|`, the exact Taylor test
     /// stays open iff `min L − ρ ≤ 0 ≤ max L + ρ`; the `f64` test encloses
     /// `L + [min(0, q″⁻), max(0, q″⁺)]·r²/2`, which holds zero (so stays
     /// open) when `min L + min(0, q″⁻)·r²/2 ≤ 0 ≤ max L + max(0, q″⁺)·r²/2`.
-    fn ball_round(&self, m: &Rat, jet: &BallJet, second: Interval) -> Option<BallRound> {
+    fn ball_round<B: JetBall>(
+        &self,
+        m: &Rat,
+        jet: &BallJet<B>,
+        second: Interval,
+    ) -> Option<BallRound> {
         let bound = second.lo.abs().max(second.hi.abs());
         if !bound.is_finite() {
             return None;
         }
-        let (dl, dh) = (
-            DwBall::from_rat(&(&self.lo - m)),
-            DwBall::from_rat(&(&self.hi - m)),
-        );
-        let (r_up, r_dn) = (
-            dl.abs_upper().max(dh.abs_upper()),
-            dl.abs_lower().max(dh.abs_lower()),
-        );
-        // r²/2 rounded up and down (three roundings, and underflow).
-        let half_sq_up = r_up * r_up * 0.5 * UP4 + f64::MIN_POSITIVE;
-        let half_sq_dn = (r_dn * r_dn * 0.5 * DOWN4 - f64::MIN_POSITIVE).max(0.0);
+        let (ol, oh) = (&self.lo - m, &self.hi - m);
+        let (dl, dh) = (jet.value.enclose_rat(&ol), jet.value.enclose_rat(&oh));
+        let ((l_up, l_dn), (h_up, h_dn)) = (dl.abs_bounds(), dh.abs_bounds());
+        let (r_up, r_dn) = (l_up.max(h_up), l_dn.max(h_dn));
+        // r²/2 rounded up and down (three roundings), past f64's range:
+        // values far below it come in multi-precision balls.
+        let rem = Remainders::new(bound, r_up, r_dn, second, B::WIDE);
         let (l, h) = (
             jet.value.plus(&jet.slope.times(&dl)),
             jet.value.plus(&jet.slope.times(&dh)),
         );
-        let remainder = DwBall {
-            hi: 0.0,
-            lo: 0.0,
-            rad: bound * half_sq_up * UP4,
+        let at = |b: &B| {
+            b.widened(rem.up)
+                .and_then(|b| b.sign_of())
+                .filter(|s| *s != 0)
         };
-        let at = |b: &DwBall| b.plus(&remainder).sign().filter(|s| *s != 0);
         if let (Some(sl), Some(sh)) = (at(&l), at(&h)) {
             if sl == sh {
                 return Some(BallRound::Sign(sl));
             }
         }
-        // Both exact tests open, proven from the balls' extremes.
-        let (min_up, max_dn) = (l.upper().min(h.upper()), l.lower().max(h.lower()));
-        let rho_dn = bound * half_sq_dn * DOWN4;
-        let taylor_open = min_up <= rho_dn && max_dn >= -rho_dn;
-        // The f64 test's remainder ends, toward zero.
-        let r_lo = ((second.lo.min(0.0) * half_sq_dn) * DOWN4 + f64::MIN_POSITIVE).min(0.0);
-        let r_hi = ((second.hi.max(0.0) * half_sq_dn) * DOWN4 - f64::MIN_POSITIVE).max(0.0);
-        let float_open = min_up <= -r_lo && max_dn >= -r_hi;
-        // 2^(−960): far from where the exact value's f64 enclosure underflows.
-        let value_nonzero = jet.value.abs_lower() >= 2f64.powi(-960);
-        (taylor_open && float_open).then_some(BallRound::Open { value_nonzero })
+        // Both exact tests open, proven from the balls' extremes: the
+        // smaller upper end at most `x`, the larger lower end at least `y`.
+        let open = |x: Scaled, y: Scaled| {
+            (l.at_most(x) || h.at_most(x)) && (l.at_least(y) || h.at_least(y))
+        };
+        if !open(rem.down, rem.down.neg()) {
+            return None;
+        }
+        // 2^(−960): far from where the exact value's f64 enclosure
+        // underflows.
+        let float_open = open(rem.minus_lo, rem.minus_hi);
+        if float_open && jet.value.abs_at_least(2f64.powi(-960)) {
+            return Some(BallRound::Open {
+                value_zero: Some(false),
+            });
+        }
+        // Otherwise the exact path's own f64 test, where the balls pin
+        // down its operands.
+        let pins = pinned(&jet.value, jet.value_exp).zip(pinned(&jet.slope, jet.slope_exp));
+        match pins {
+            Some((qm, dqm)) => {
+                let offset = Interval::from_rat(&ol).hull(&Interval::from_rat(&oh));
+                let test = qm + dqm * offset + second * offset.square() * Interval::point(0.5);
+                Some(match test.sign().filter(|s| *s != 0) {
+                    Some(s) => BallRound::Sign(s),
+                    None => BallRound::Open {
+                        value_zero: Some(qm.contains_zero()),
+                    },
+                })
+            }
+            None => float_open.then_some(BallRound::Open { value_zero: None }),
+        }
     }
 
     /// Shrinks the enclosure until `hi − lo <= max_width` (or the root turns
@@ -618,10 +721,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
     ///    linear part in `f64` (cheap), then with it exact
     ///    (`RealRoot::exact_taylor_sign`: no underflow, however small
     ///    `q(α)` is beside `q`'s coefficients). Before either, the model's
-    ///    double-word jet ([`SignModel::ball_jet_at`]) is tried: it decides
-    ///    only where the exact form would, and proves when neither would,
-    ///    so that the exact jet is formed only when the balls cannot tell
-    ///    (`RealRoot::ball_round`; every step is the same as without it);
+    ///    double-word jet ([`SignModel::ball_jet_at`]), then its
+    ///    multi-precision one ([`SignModel::big_jet_at`], for values out of
+    ///    `f64`'s range or cancelling past 106 bits) is tried: each decides
+    ///    only where the exact forms would, and proves when neither would,
+    ///    so that the exact jet is formed only when no ball can tell
+    ///    (`RealRoot::ball_round`; every step is the same as without them);
     /// 3. once `q(α) ≠ 0` is proven, at rounds 3, 6, 12, …, Descartes' rule
     ///    on `q`'s exact Bernstein coefficients over `I`.
     ///
@@ -653,11 +758,19 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // and tell when those would not decide either.
             let ball = model
                 .ball_jet_at(&m)
-                .and_then(|jet| self.ball_round(&m, &jet, second));
+                .and_then(|jet| self.ball_round(&m, &jet, second))
+                .or_else(|| {
+                    model
+                        .big_jet_at(&m, SIGN_BALL_BITS)
+                        .and_then(|jet| self.ball_round(&m, &jet, second))
+                });
             let value_zero = match ball {
                 Some(BallRound::Sign(s)) => return s,
+                Some(BallRound::Open {
+                    value_zero: Some(zero),
+                }) => zero,
                 // From round 1 on the zero test runs whatever q(m) is.
-                Some(BallRound::Open { value_nonzero }) if value_nonzero || round >= 1 => false,
+                Some(BallRound::Open { value_zero: None }) if round >= 1 => false,
                 _ => {
                     let jet = model.exact_jet_at(&m);
                     let (qm, dqm) = jet.enclose();

@@ -469,62 +469,273 @@ impl crate::SignModel for ExactOnly {
     }
 }
 
+/// A model whose only view short of the exact jet is the multi-precision
+/// one: [`crate::SignModel::big_jet_at`] by Horner's rule over
+/// [`BigInterval`](ccd_arith::BigInterval)s of `q`'s exact coefficients
+/// (rounded to the asked precision), on the exact jet's scale.
+#[derive(Clone, Debug)]
+struct BigOnly(std::sync::Arc<crate::SignProbe>);
+
+impl crate::SignModel for BigOnly {
+    fn enclose(&self, x: Interval) -> Interval {
+        self.0.enclose(x)
+    }
+    fn enclose_second(&self, x: Interval) -> Interval {
+        self.0.enclose_second(x)
+    }
+    fn exact_jet_at(&self, m: &Rat) -> crate::ExactJet {
+        self.0.exact_jet_at(m)
+    }
+    fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<crate::BallJet<ccd_arith::BigInterval>> {
+        use ccd_arith::{BigInterval, Dyadic, RingOps};
+        let q = self.0.exact();
+        let k = m.dyadic_exponent()? as i64;
+        let n = q.degree().unwrap_or(0) as i64;
+        let jet = self.0.exact_jet_at(m);
+        let x = BigInterval::from_rat(m, prec);
+        let (mut v, mut d) = (BigInterval::zero(), BigInterval::zero());
+        for c in q.coeffs().iter().rev() {
+            let c = BigInterval::new(Dyadic::from_int(c), Dyadic::from_int(c), prec);
+            d = d.times(&x).plus(&v);
+            v = v.times(&x).plus(&c);
+        }
+        // σ = 2^(−shift) with value_exp = shift + k·n.
+        let shift = jet.value_exp - k * n;
+        Some(crate::BallJet {
+            value: v.mul_pow2(-shift),
+            slope: d.mul_pow2(-shift),
+            value_exp: jet.value_exp,
+            slope_exp: jet.slope_exp,
+        })
+    }
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        self.0.approx_value_and_slope(x)
+    }
+    fn sign_at(&self, x: &Rat) -> i32 {
+        self.0.sign_at(x)
+    }
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        self.0.admits_root_at(x)
+    }
+    fn exact(&self) -> &ZPoly {
+        self.0.exact()
+    }
+}
+
+/// The model `M` at the scale `σ·2^(−FAINT)`: its values and enclosures
+/// far below `f64`'s range, as a closed form's of long numbers can be
+/// (the enclosures underflow to the smallest normal bounds, `f64` Newton
+/// guesses to zero, and only the exact and multi-precision jets keep
+/// their size).
+#[derive(Clone, Debug)]
+struct Faint<M>(M);
+
+const FAINT: i64 = 3000;
+
+/// An `f64` interval times `2^(−FAINT)`, rounded outward.
+fn faint(iv: Interval) -> Interval {
+    let end = |x: f64, up: bool| match x {
+        x if x.is_infinite() => x,
+        x if x > 0.0 => {
+            if up {
+                f64::MIN_POSITIVE
+            } else {
+                0.0
+            }
+        }
+        x if x < 0.0 => {
+            if up {
+                0.0
+            } else {
+                -f64::MIN_POSITIVE
+            }
+        }
+        _ => 0.0,
+    };
+    Interval::new(end(iv.lo, false), end(iv.hi, true))
+}
+
+impl<M: crate::SignModel> crate::SignModel for Faint<M> {
+    fn enclose(&self, x: Interval) -> Interval {
+        faint(self.0.enclose(x))
+    }
+    fn enclose_second(&self, x: Interval) -> Interval {
+        faint(self.0.enclose_second(x))
+    }
+    fn exact_jet_at(&self, m: &Rat) -> crate::ExactJet {
+        let jet = self.0.exact_jet_at(m);
+        crate::ExactJet {
+            value_exp: jet.value_exp + FAINT,
+            slope_exp: jet.slope_exp + FAINT,
+            ..jet
+        }
+    }
+    fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<crate::BallJet<ccd_arith::BigInterval>> {
+        let jet = self.0.big_jet_at(m, prec)?;
+        Some(crate::BallJet {
+            value: jet.value.mul_pow2(-FAINT),
+            slope: jet.slope.mul_pow2(-FAINT),
+            value_exp: jet.value_exp + FAINT,
+            slope_exp: jet.slope_exp + FAINT,
+        })
+    }
+    fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
+        let (v, d) = self.0.approx_value_and_slope(x);
+        (v * 0.0, d * 0.0)
+    }
+    fn sign_at(&self, x: &Rat) -> i32 {
+        self.0.sign_at(x)
+    }
+    fn admits_root_at(&self, x: &Rat) -> bool {
+        self.0.admits_root_at(x)
+    }
+    fn exact(&self) -> &ZPoly {
+        self.0.exact()
+    }
+}
+
+/// A polynomial with long coefficients (a big constant `3^scale` times
+/// rational roots, nudged, so that its roots are irrational and near each
+/// other) and two quantities at its roots: `q = (t − r)(1 + t + t²)·3^scale
+/// + q_off`, nonzero at every simple root or vanishing at one, and `q2`,
+/// positive with a positive curvature at `r` (decided by the one-sided
+/// `f64` Taylor test where the symmetric one is still open).
+fn near_roots(
+    roots: Vec<(i64, i64)>,
+    scale: u32,
+    nudge: i64,
+    q_root: usize,
+    q_off: i64,
+) -> (ZPoly, [ZPoly; 2]) {
+    let mut factors: Vec<(Rat, u32)> = Vec::new();
+    for (p, q) in roots {
+        let r = Rat::from_frac(p.min(q - 1), q);
+        if !factors.iter().any(|(x, _)| *x == r) {
+            factors.push((r, 1));
+        }
+    }
+    let big = Int::from(3).pow(scale);
+    let p = &product(&factors).mul_int(&big) + &ZPoly::from_i64s(&[nudge]);
+    let r = &factors[q_root % factors.len()].0;
+    let q =
+        &(&linear(r) * &ZPoly::from_i64s(&[1, 1, 1])).mul_int(&big) + &ZPoly::from_i64s(&[q_off]);
+    let q2 = &(&linear(r).pow(2) * &ZPoly::from_i64s(&[1, 1])).mul_int(&big)
+        + &ZPoly::from_i64s(&[q_off.abs() + 1]);
+    (p, [q2, q])
+}
+
+/// Deciding the signs of `qs` at each root of `p` in `[0, 1]`, refining it
+/// to `target`, and deciding the last one again, with the models `tiered`
+/// makes give the very same enclosures and signs as with the models
+/// `exact` makes, which take exact jets only.
+fn tiers_change_no_step<T: crate::SignModel + Clone, E: crate::SignModel + Clone>(
+    tiered: impl Fn(std::sync::Arc<crate::SignProbe>) -> T,
+    exact: impl Fn(std::sync::Arc<crate::SignProbe>) -> E,
+    p: &ZPoly,
+    qs: &[ZPoly],
+    target: &Rat,
+) -> Result<(), TestCaseError> {
+    /// The same root over `base`.
+    fn like<M: crate::SignModel + Clone>(root: &crate::RealRoot, base: M) -> crate::RealRoot<M> {
+        match root.exact_value() {
+            Some(v) => crate::RealRoot::exact(base, v.clone()),
+            None => {
+                let s = root.poly().sign_at(root.lo());
+                crate::RealRoot::isolated(base, root.lo().clone(), root.hi().clone(), s)
+            }
+        }
+    }
+    let probes: Vec<_> = qs
+        .iter()
+        .map(|q| std::sync::Arc::new(crate::SignProbe::new(q)))
+        .collect();
+    let last = probes.last().expect("a quantity");
+    for root in all_roots(p, &Rat::zero(), &Rat::one()) {
+        // The same (squarefree, primitive) polynomial under both models.
+        let shared = std::sync::Arc::new(crate::SignProbe::new(root.poly()));
+        let mut tiers = like(&root, tiered(shared.clone()));
+        let mut exact_only = like(&root, exact(shared));
+        let ends = |lo: &Rat, hi: &Rat| (lo.clone(), hi.clone());
+        for (i, q) in probes.iter().chain([last]).enumerate() {
+            if i == probes.len() {
+                tiers.refine_to(target);
+                exact_only.refine_to(target);
+                prop_assert_eq!(
+                    ends(tiers.lo(), tiers.hi()),
+                    ends(exact_only.lo(), exact_only.hi())
+                );
+            }
+            prop_assert_eq!(
+                tiers.sign_with(&tiered(q.clone())),
+                exact_only.sign_with(&exact(q.clone()))
+            );
+            prop_assert_eq!(
+                ends(tiers.lo(), tiers.hi()),
+                ends(exact_only.lo(), exact_only.hi())
+            );
+        }
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
-    /// The double-word jets change no step: refining a root and deciding
-    /// signs at it give the very same enclosures and signs with them as
-    /// with exact jets only, on polynomials long enough for the balls
-    /// (coefficients of 1400–2200 bits), with roots near each other and
-    /// quantities that vanish at the root or nearly do.
+    /// The double-word jets change no step (coefficients of 1400–2200
+    /// bits, long enough for the balls).
     #[test]
     fn ball_jets_change_no_step(
         roots in proptest::collection::vec((1i64..=997, 2i64..=998), 2..5),
         scale in 900u32..1400, nudge in -2i64..3, digits in 15u32..60,
         q_root in 0usize..4, q_off in -3i64..4,
     ) {
-        let mut factors: Vec<(Rat, u32)> = Vec::new();
-        for (p, q) in roots {
-            let r = Rat::from_frac(p.min(q - 1), q);
-            if !factors.iter().any(|(x, _)| *x == r) {
-                factors.push((r, 1));
-            }
-        }
-        // A big constant and a nudge: irrational roots near the rational ones.
-        let big = Int::from(3).pow(scale);
-        let p = &product(&factors).mul_int(&big) + &ZPoly::from_i64s(&[nudge]);
-        let roots = all_roots(&p, &Rat::zero(), &Rat::one());
+        let (p, qs) = near_roots(roots, scale, nudge, q_root, q_off);
         let target = Rat::new(Int::one(), Int::pow10(digits)).unwrap();
-        // q = p′·big + small: nonzero at every simple root, or vanishing at one.
-        let r = &factors[q_root % factors.len()].0;
-        let q = &(&linear(r) * &ZPoly::from_i64s(&[1, 1, 1])).mul_int(&big) + &ZPoly::from_i64s(&[q_off]);
-        let probe = std::sync::Arc::new(crate::SignProbe::new(&q));
-        // Positive with a positive curvature at r: decided by the one-sided
-        // f64 Taylor test where the symmetric one is still open.
-        let q2 = &(&linear(r).pow(2) * &ZPoly::from_i64s(&[1, 1])).mul_int(&big) + &ZPoly::from_i64s(&[q_off.abs() + 1]);
-        let probe2 = std::sync::Arc::new(crate::SignProbe::new(&q2));
-        for root in roots {
-            let (lo, hi) = (root.lo().clone(), root.hi().clone());
-            // The same root over the same (squarefree, primitive) polynomial.
-            let base = ExactOnly(std::sync::Arc::new(crate::SignProbe::new(root.poly())));
-            let mut exact = match root.exact_value() {
-                Some(v) => crate::RealRoot::exact(base, v.clone()),
-                None => {
-                    let s = root.poly().sign_at(&lo);
-                    crate::RealRoot::isolated(base, lo, hi, s)
-                }
-            };
-            let mut balls = root.clone();
-            prop_assert_eq!(balls.sign_with(&probe2), exact.sign_with(&ExactOnly(probe2.clone())));
-            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
-            prop_assert_eq!(balls.sign_with(&probe), exact.sign_with(&ExactOnly(probe.clone())));
-            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
-            balls.refine_to(&target);
-            exact.refine_to(&target);
-            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
-            prop_assert_eq!(balls.sign_with(&probe), exact.sign_with(&ExactOnly(probe.clone())));
-            prop_assert_eq!((balls.lo(), balls.hi()), (exact.lo(), exact.hi()));
-        }
+        tiers_change_no_step(|p| p, ExactOnly, &p, &qs, &target)?;
     }
+
+    /// Nor do the multi-precision jets, alone (no double-word view), on
+    /// the same polynomials, nor far below `f64`'s range ([`Faint`]),
+    /// where double-word balls could not hold the values and every `f64`
+    /// enclosure underflows.
+    #[test]
+    fn big_jets_change_no_step(
+        roots in proptest::collection::vec((1i64..=997, 2i64..=998), 2..5),
+        scale in 900u32..1400, nudge in -2i64..3, digits in 15u32..60,
+        q_root in 0usize..4, q_off in -3i64..4,
+    ) {
+        let (p, qs) = near_roots(roots, scale, nudge, q_root, q_off);
+        let target = Rat::new(Int::one(), Int::pow10(digits)).unwrap();
+        tiers_change_no_step(BigOnly, ExactOnly, &p, &qs, &target)?;
+        tiers_change_no_step(|p| Faint(BigOnly(p)), |p| Faint(ExactOnly(p)), &p, &qs, &target)?;
+    }
+}
+
+/// Quantities that vanish at an irrational root (`q(α) = 0` for
+/// `α = √2/3`, decided by the zero test in the very round the exact path
+/// runs it) and ones that nearly do, through every tier: the same steps.
+#[test]
+fn tiers_change_no_step_at_vanishing_quantities() {
+    let big = ZPoly::from_i64s(&[1]).mul_int(&Int::from(3).pow(1000));
+    let shared = &big * &ZPoly::from_i64s(&[-2, 0, 9]); // 9t² − 2
+    let p = &shared * &ZPoly::from_i64s(&[-1, 2]);
+    let qs = [
+        &shared * &ZPoly::from_i64s(&[1, 1]),
+        &(&shared * &ZPoly::from_i64s(&[1, 1])) + &ZPoly::from_i64s(&[1]),
+    ];
+    let target = Rat::new(Int::one(), Int::pow10(40)).unwrap();
+    let run = |r: Result<(), TestCaseError>| r.expect("the same steps");
+    run(tiers_change_no_step(|p| p, ExactOnly, &p, &qs, &target));
+    run(tiers_change_no_step(BigOnly, ExactOnly, &p, &qs, &target));
+    run(tiers_change_no_step(
+        |p| Faint(BigOnly(p)),
+        |p| Faint(ExactOnly(p)),
+        &p,
+        &qs,
+        &target,
+    ));
+    let mut roots = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(roots.len(), 2);
+    assert_eq!(roots[0].sign_of(&qs[0]), 0);
 }
 
 /// A root below `f64`'s range (`α = √3·2^(−1100)`) and a quantity positive
