@@ -126,7 +126,7 @@ impl Scaled {
 /// `None` means "not proven".
 pub trait JetBall: RingOps {
     /// Whether the ball's values reach past `f64`'s exponent range (its
-    /// tests then need [`Scaled`] remainders).
+    /// tests then need remainders past that range too).
     const WIDE: bool;
     /// An enclosure of the rational `x`, at this ball's precision.
     fn enclose_rat(&self, x: &Rat) -> Self;
