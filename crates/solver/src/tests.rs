@@ -524,25 +524,17 @@ struct Faint<M>(M);
 
 const FAINT: i64 = 3000;
 
-/// An `f64` interval times `2^(−FAINT)`, rounded outward.
+/// An `f64` interval times `2^(−FAINT)`, rounded outward: every finite
+/// nonzero end lands strictly inside `(−MIN_POSITIVE, MIN_POSITIVE)`.
 fn faint(iv: Interval) -> Interval {
-    let end = |x: f64, up: bool| match x {
-        x if x.is_infinite() => x,
-        x if x > 0.0 => {
-            if up {
-                f64::MIN_POSITIVE
-            } else {
-                0.0
-            }
+    let end = |x: f64, up: bool| {
+        if x.is_infinite() || x == 0.0 {
+            x
+        } else if (x > 0.0) == up {
+            f64::MIN_POSITIVE.copysign(x)
+        } else {
+            0.0
         }
-        x if x < 0.0 => {
-            if up {
-                0.0
-            } else {
-                -f64::MIN_POSITIVE
-            }
-        }
-        _ => 0.0,
     };
     Interval::new(end(iv.lo, false), end(iv.hi, true))
 }
