@@ -454,12 +454,15 @@ impl SignModel for ClosedForm {
         })
     }
 
-    /// The closed form over dual numbers of multi-precision intervals
-    /// ([`BigInterval`], `prec` bits) of the exact jets `(F_k, G_k)` at `m`
-    /// (cached for [`SignModel::exact_jet_at`] at the same point): for long
-    /// values (at least [`INTERVAL_SIGN_MIN_BITS`], below which the exact
+    /// The closed form of the exact jets `(F_k, G_k)` at `m` (cached for
+    /// [`SignModel::exact_jet_at`] at the same point) for long values (at
+    /// least 1,536 bits, `INTERVAL_SIGN_MIN_BITS`, below which the exact
     /// closed form costs about as much), out of `f64`'s exponent range or
-    /// cancelling past the double-word balls' 106 bits.
+    /// cancelling past the double-word balls' 106 bits: up to 128 bits
+    /// (`BALANCED_BITS`) in double-word balls balanced into `f64`'s range
+    /// and scaled back exactly (`ClosedForm::balanced_exact`); else, or
+    /// where fewer than 60 bits survive, over dual numbers of `prec`-bit
+    /// [`BigInterval`]s.
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
         let j = m.dyadic_exponent()? as i64;
         let q = self.with_jets(m, |jets| {

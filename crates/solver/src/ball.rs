@@ -83,6 +83,10 @@ impl Scaled {
     /// overflow `±MAX` or `±∞`, whichever is on the safe side.
     #[inline]
     pub fn to_f64(self, up: bool) -> f64 {
+        if self.f == 0.0 {
+            // Zero at any exponent (products keep `e` on zeros).
+            return 0.0;
+        }
         let v = if self.e == 0 {
             self.f
         } else if self.e > 2200 {
@@ -316,6 +320,25 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Zero at any exponent converts to zero, both ways (a product with a
+    /// zero factor keeps the other's exponent; found by review).
+    #[test]
+    fn scaled_zero_is_zero_at_any_exponent() {
+        for e in [-5000, -2201, 0, 2201, 5000] {
+            for f in [0.0, -0.0] {
+                let z = Scaled { f, e };
+                assert_eq!(z.to_f64(false), 0.0);
+                assert_eq!(z.to_f64(true), 0.0);
+                assert_eq!(Scaled::new(0.5).times(z).to_f64(false), 0.0);
+            }
+        }
+        let zero = Dyadic {
+            m: ccd_arith::Int::zero(),
+            e: 3000,
+        };
+        assert_eq!((abs_f64(&zero, false), abs_f64(&zero, true)), (0.0, 0.0));
     }
 
     /// A ball far below f64's range against bounds near it.
