@@ -524,8 +524,9 @@ struct Faint<M>(M);
 
 const FAINT: i64 = 3000;
 
-/// An `f64` interval times `2^(−FAINT)`, rounded outward: every finite
-/// nonzero end lands strictly inside `(−MIN_POSITIVE, MIN_POSITIVE)`.
+/// An `f64` interval times `2^(−FAINT)`, rounded outward: a finite
+/// nonzero end's scaled value lies strictly between 0 and
+/// `±MIN_POSITIVE`, so it rounds to one of them.
 fn faint(iv: Interval) -> Interval {
     let end = |x: f64, up: bool| {
         if x.is_infinite() || x == 0.0 {
