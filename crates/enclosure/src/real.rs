@@ -3,8 +3,7 @@
 //! fast `f64` [`Interval`] and the escalation type [`BigInterval`].
 
 use crate::trig::{half_pi_cody_waite, pi_enclosure};
-use ccd_arith::{BigInterval, Dyadic};
-use ccd_arith::{Int, Interval, Rat, RingOps};
+use ccd_arith::{BigInterval, Dyadic, Int, Interval, Rat, RingOps};
 use std::sync::OnceLock;
 
 /// Largest multiple `k` of π/2 for which the `f64` Cody–Waite reduction

@@ -28,8 +28,7 @@
 //!   longer than about 2π get `[−1, 1]`.
 
 use crate::real::Real;
-use ccd_arith::{BigInterval, Dyadic};
-use ccd_arith::{Int, Interval, Rat, RingOps};
+use ccd_arith::{BigInterval, Dyadic, Int, Interval, Rat, RingOps};
 use std::sync::{Mutex, OnceLock};
 
 /// Guard bits of the Machin sums beyond the bits asked for.

@@ -367,17 +367,36 @@ impl ClosedForm {
     /// past the closed form's cancellation, at a tenth of the cost of
     /// intervals; `None` when a ball leaves `f64`'s range all the same or
     /// keeps fewer than 60 bits.
+    /// The exponent `scale` of the jets at a dyadic point `a/2^j`:
+    /// `σ·(q(m), q′(m)) = Q(F + εG)·2^(−scale)` ([`SignModel::exact_jet_at`]).
+    fn jet_scale(&self, j: i64) -> i64 {
+        (j * self.f.f.degree() as i64 + self.f.shift) * weight(self.q)
+    }
+
+    /// The closed form over double-word jets balanced into `f64`'s range
+    /// ([`balancing`], by the sizes `log2` of the values), jet `i` times
+    /// `2^k` given by `scaled(i, k)`: the result `r` and the exponent
+    /// `undo` with `Q = 2^undo·r`.
+    fn balanced_of(
+        &self,
+        log2: impl Fn(usize) -> Option<f64>,
+        scaled: impl Fn(usize, i64) -> Dual<DwBall>,
+    ) -> (Dual<DwBall>, i64) {
+        let (e, g) = balancing(log2);
+        let balanced: [Dual<DwBall>; 5] =
+            std::array::from_fn(|i| scaled(i, e * (4 - i as i64) + g));
+        let undo = -e * isobaric_weight(self.q) as i64 - g * weight(self.q);
+        (self.of(&balanced), undo)
+    }
+
     fn balanced_exact(&self, jets: &[Dual<Int>; 5], prec: u32) -> Option<Dual<BigInterval>> {
-        let (e, g) = balancing(|i| (!jets[i].v.is_zero()).then(|| jets[i].v.bits() as f64));
-        let balanced: [Dual<DwBall>; 5] = std::array::from_fn(|i| {
-            let k = e * (4 - i as i64) + g;
-            Dual {
+        let (q, undo) = self.balanced_of(
+            |i| (!jets[i].v.is_zero()).then(|| jets[i].v.bits() as f64),
+            |i, k| Dual {
                 v: DwBall::from_int_scaled(&jets[i].v, -k),
                 d: DwBall::from_int_scaled(&jets[i].d, -k),
-            }
-        });
-        let undo = -e * isobaric_weight(self.q) as i64 - g * weight(self.q);
-        let q = self.of(&balanced);
+            },
+        );
         // A ball with fewer than 60 bits left (cancellation past its
         // precision) is left to the intervals.
         let tight = |b: &DwBall| b.is_known() && b.rad <= b.hi.abs() * 2f64.powi(-60);
@@ -409,9 +428,8 @@ impl SignModel for ClosedForm {
 
     fn exact_jet_at(&self, m: &Rat) -> ExactJet {
         let j = m.dyadic_exponent().expect("a dyadic point") as i64;
-        let w = weight(self.q);
         let q = self.with_jets(m, |jets| self.of(jets));
-        let scale = j * self.f.f.degree() as i64 * w + self.f.shift * w;
+        let scale = self.jet_scale(j);
         ExactJet {
             value: q.v,
             slope: q.d,
@@ -426,26 +444,18 @@ impl SignModel for ClosedForm {
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
         let j = m.dyadic_exponent()? as i64;
         let jets = self.ball_jets(m)?;
-        // λ → 2^e·λ balances the highest and lowest nonzero coefficients
-        // (`a_k1·2^(k1·e)` against `a_k0·2^(k0·e)`: sizes far apart would
-        // underflow the products), and 2^(−e·weight) undoes it exactly
-        // (isobaric_weight).
-        let log2 = |b: &DwBall| (b.hi != 0.0).then(|| b.hi.abs().log2());
-        let (e, g) = balancing(|i| log2(&jets[i].v));
-        let balanced: [Dual<DwBall>; 5] = std::array::from_fn(|i| {
-            let k = e * (4 - i as i64) + g;
-            Dual {
+        let (q, undo) = self.balanced_of(
+            |i| (jets[i].v.hi != 0.0).then(|| jets[i].v.hi.abs().log2()),
+            |i, k| Dual {
                 v: jets[i].v.mul_pow2(k),
                 d: jets[i].d.mul_pow2(k),
-            }
-        });
-        let undo = -e * isobaric_weight(self.q) as i64 - g * weight(self.q);
-        let q = self.of(&balanced);
+            },
+        );
         let q = Dual {
             v: q.v.mul_pow2(undo),
             d: q.d.mul_pow2(undo),
         };
-        let scale = j * self.f.f.degree() as i64 * weight(self.q) + self.f.shift * weight(self.q);
+        let scale = self.jet_scale(j);
         (q.v.is_known() && q.d.is_known()).then_some(BallJet {
             value: q.v,
             slope: q.d,
@@ -484,8 +494,7 @@ impl SignModel for ClosedForm {
                 d: enclose(&d.d),
             })))
         })?;
-        let w = weight(self.q);
-        let scale = j * self.f.f.degree() as i64 * w + self.f.shift * w;
+        let scale = self.jet_scale(j);
         Some(BallJet {
             value: q.v.mul_pow2(-scale),
             slope: q.d.mul_pow2(-scale),
@@ -769,7 +778,7 @@ mod tests {
             });
             let f = Rc::new(Coefficients::new(CharPoly { coeffs: coeffs.clone() }));
             let m = Rat::dyadic(Int::from(a), j);
-            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+            for q in QS {
                 let model = model(&f, q);
                 let exact = model.exact_jet_at(&m);
                 let Some(big) = model.big_jet_at(&m, prec) else {

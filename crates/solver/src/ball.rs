@@ -104,7 +104,7 @@ impl Scaled {
                 f64::MAX.copysign(v)
             };
         }
-        if v.abs() < f64::MIN_POSITIVE && self.f != 0.0 {
+        if v.abs() < f64::MIN_POSITIVE {
             // Rounded, or flushed to zero.
             return match (up, self.f > 0.0) {
                 (true, true) => f64::MIN_POSITIVE,
@@ -230,11 +230,9 @@ fn abs_f64(d: &Dyadic, up: bool) -> f64 {
     .to_f64(up)
 }
 
-/// An exact `f64` interval `[lo, hi]` (finite ends) at `prec` bits.
-fn from_f64s(lo: f64, hi: f64, prec: u32) -> Option<BigInterval> {
-    let mut b = BigInterval::new(Dyadic::from_f64(lo)?, Dyadic::from_f64(hi)?, 0);
-    b.prec = prec;
-    Some(b)
+/// `[lo, hi]` exactly (not rounded), carrying the precision `prec`.
+fn exactly(lo: Dyadic, hi: Dyadic, prec: u32) -> BigInterval {
+    BigInterval { lo, hi, prec }
 }
 
 impl JetBall for BigInterval {
@@ -243,23 +241,21 @@ impl JetBall for BigInterval {
         BigInterval::from_rat(x, self.prec)
     }
     fn abs_bounds(&self) -> (f64, f64) {
-        let (lo, hi) = (abs_f64(&self.lo, false), abs_f64(&self.hi, false));
         let upper = abs_f64(&self.lo, true).max(abs_f64(&self.hi, true));
         let lower = if self.contains_zero() {
             0.0
         } else {
-            lo.min(hi)
+            abs_f64(&self.lo, false).min(abs_f64(&self.hi, false))
         };
         (upper, lower)
     }
     fn widened(&self, r: Scaled) -> Option<Self> {
         let r = r.to_dyadic()?;
-        let mut b = BigInterval::new(r.neg(), r, 0);
-        b.prec = self.prec;
-        Some(self.plus(&b))
+        Some(self.plus(&exactly(r.neg(), r, self.prec)))
     }
     fn plus_interval(&self, iv: Interval) -> Option<Self> {
-        Some(self.plus(&from_f64s(iv.lo, iv.hi, self.prec)?))
+        let (lo, hi) = (Dyadic::from_f64(iv.lo)?, Dyadic::from_f64(iv.hi)?);
+        Some(self.plus(&exactly(lo, hi, self.prec)))
     }
     fn sign_of(&self) -> Option<i32> {
         self.sign()

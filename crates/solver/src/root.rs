@@ -17,6 +17,12 @@ const EXACT_SIGN_ROUND: u32 = 3;
 /// [`RealRoot::exact_newton_jump`]): about `max(w², target/4)`, no finer
 /// than the Taylor model's reach (`sup|p″|·w²/|p′|`, from the slope's `f64`
 /// enclosure `slope` and `second ⊇ p″(I)`), and at least `w/4`.
+/// `−log2` of a positive rational, rounded up (within one bit), from bit
+/// lengths alone.
+fn neg_log2(r: &Rat) -> i64 {
+    (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0)
+}
+
 fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> i64 {
     // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
     // cut δ from the root has a linear part near |p′|·δ: cuts closer
@@ -30,8 +36,6 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
     } else {
         i64::MAX
     };
-    // −log2 of a positive rational, rounded up (within one bit).
-    let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
     neg_log2(&(w * w))
         .min(neg_log2(target) + 2)
         .min(model_k)
@@ -320,9 +324,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// decide, `p(x)` is evaluated exactly.
     ///
     /// The same step is first tried from the model's double-word jet, then
-    /// from its multi-precision one at about twice the enclosure's bits
-    /// ([`RealRoot::ball_newton_jump`]); the exact jet is formed only when
-    /// neither pins the step down.
+    /// from its multi-precision one at the step's grid plus
+    /// [`NEWTON_BALL_MARGIN`] bits ([`RealRoot::ball_newton_jump`]); the
+    /// exact jet is formed only when neither pins the step down.
     fn exact_newton_jump(&mut self, target: &Rat, w: &Rat) -> bool {
         let quarter = w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
@@ -338,12 +342,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // bit lengths alone, within two bits) past the bits the value
         // `p(m) ≈ p′·(m − α)` cancels to, about the enclosure's, which
         // `δ = p(m)/p′(m)` is short of by as many.
-        let neg_log2 = |r: &Rat| (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0);
         let (wb, tb) = (neg_log2(w), neg_log2(target));
         let k = (2 * wb).min(tb + 2).max(wb + 2) + 2;
-        let prec = u32::try_from(k)
-            .unwrap_or(u32::MAX)
-            .saturating_add(NEWTON_BALL_MARGIN);
+        let prec = u32::try_from(k + i64::from(NEWTON_BALL_MARGIN)).unwrap_or(u32::MAX);
         if let Some(jet) = self.base.big_jet_at(&m, prec) {
             if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
                 return done;
@@ -519,8 +520,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let pins = pinned(&jet.value, jet.value_exp).zip(pinned(&jet.slope, jet.slope_exp));
         match pins {
             Some((qm, dqm)) => {
-                let offset = Interval::from_rat(&ol).hull(&Interval::from_rat(&oh));
-                let test = qm + dqm * offset + second * offset.square() * Interval::point(0.5);
+                let test = self.float_taylor(m, qm, dqm, second);
                 Some(match test.sign().filter(|s| *s != 0) {
                     Some(s) => BallRound::Sign(s),
                     None => BallRound::Open {
@@ -708,6 +708,17 @@ impl<M: SignModel + Clone> RealRoot<M> {
         Interval::from_rat(&self.lo).hull(&Interval::from_rat(&self.hi))
     }
 
+    /// [`RealRoot::sign_with`]'s Taylor test in `f64` at `m`, from the
+    /// `f64` enclosures `qm`, `dqm` of `σ·q(m)`, `σ·q′(m)`: `q(m) +
+    /// q′(m)·(I − m) + q″(I)·(I − m)²/2`, with `I − m` exact, then
+    /// enclosed (an `f64` interval around `α` itself could not be narrower
+    /// than an ulp of `α`). Also what a ball round runs where its balls
+    /// pin `qm` and `dqm` down, so that both are the same test.
+    fn float_taylor(&self, m: &Rat, qm: Interval, dqm: Interval, second: Interval) -> Interval {
+        let offset = Interval::from_rat(&(&self.lo - m)).hull(&Interval::from_rat(&(&self.hi - m)));
+        qm + dqm * offset + second * offset.square() * Interval::point(0.5)
+    }
+
     /// The exact sign (−1, 0, 1) of `q(α)`; see [`RealRoot::sign_with`],
     /// which this calls with a fresh [`SignProbe`].
     pub fn sign_of(&mut self, q: &ZPoly) -> i32 {
@@ -782,12 +793,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 _ => {
                     let jet = model.exact_jet_at(&m);
                     let (qm, dqm) = jet.enclose();
-                    // I − m exactly, then enclosed: an f64 interval around α
-                    // itself could not be narrower than an ulp of α.
-                    let offset = Interval::from_rat(&(&self.lo - &m))
-                        .hull(&Interval::from_rat(&(&self.hi - &m)));
-                    let half = Interval::point(0.5);
-                    if let Some(s) = decided(qm + dqm * offset + second * offset.square() * half) {
+                    if let Some(s) = decided(self.float_taylor(&m, qm, dqm, second)) {
                         return s;
                     }
                     // The same Taylor form with its linear part kept exact:
