@@ -115,6 +115,18 @@ impl Remainders {
     }
 }
 
+/// [`RealRoot::sign_with`]'s Taylor test in `f64`, from the `f64`
+/// enclosures `qm`, `dqm` of `σ·q(m)`, `σ·q′(m)` and the exact offsets
+/// `(ol, oh)` of the enclosure's ends from `m`: `q(m) + q′(m)·(I − m) +
+/// q″(I)·(I − m)²/2`, with `I − m` enclosed from the exact offsets (an
+/// `f64` interval around `α` itself could not be narrower than an ulp of
+/// `α`). Also what a ball round runs where its balls pin `qm` and `dqm`
+/// down, so that both are the same test.
+fn float_taylor((ol, oh): (&Rat, &Rat), qm: Interval, dqm: Interval, second: Interval) -> Interval {
+    let offset = Interval::from_rat(ol).hull(&Interval::from_rat(oh));
+    qm + dqm * offset + second * offset.square() * Interval::point(0.5)
+}
+
 /// What one round of Taylor tests from balls found
 /// ([`RealRoot::ball_round`]).
 enum BallRound {
@@ -478,7 +490,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         if !bound.is_finite() {
             return None;
         }
-        let (ol, oh) = (&self.lo - m, &self.hi - m);
+        let (ol, oh) = self.offsets(m);
         let (dl, dh) = (jet.value.enclose_rat(&ol), jet.value.enclose_rat(&oh));
         let ((l_up, l_dn), (h_up, h_dn)) = (dl.abs_bounds(), dh.abs_bounds());
         let (r_up, r_dn) = (l_up.max(h_up), l_dn.max(h_dn));
@@ -520,7 +532,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let pins = pinned(&jet.value, jet.value_exp).zip(pinned(&jet.slope, jet.slope_exp));
         match pins {
             Some((qm, dqm)) => {
-                let test = self.float_taylor(m, qm, dqm, second);
+                let test = float_taylor((&ol, &oh), qm, dqm, second);
                 Some(match test.sign().filter(|s| *s != 0) {
                     Some(s) => BallRound::Sign(s),
                     None => BallRound::Open {
@@ -708,15 +720,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         Interval::from_rat(&self.lo).hull(&Interval::from_rat(&self.hi))
     }
 
-    /// [`RealRoot::sign_with`]'s Taylor test in `f64` at `m`, from the
-    /// `f64` enclosures `qm`, `dqm` of `σ·q(m)`, `σ·q′(m)`: `q(m) +
-    /// q′(m)·(I − m) + q″(I)·(I − m)²/2`, with `I − m` exact, then
-    /// enclosed (an `f64` interval around `α` itself could not be narrower
-    /// than an ulp of `α`). Also what a ball round runs where its balls
-    /// pin `qm` and `dqm` down, so that both are the same test.
-    fn float_taylor(&self, m: &Rat, qm: Interval, dqm: Interval, second: Interval) -> Interval {
-        let offset = Interval::from_rat(&(&self.lo - m)).hull(&Interval::from_rat(&(&self.hi - m)));
-        qm + dqm * offset + second * offset.square() * Interval::point(0.5)
+    /// The offsets `lo − m` and `hi − m` of the enclosure's ends, exact.
+    fn offsets(&self, m: &Rat) -> (Rat, Rat) {
+        (&self.lo - m, &self.hi - m)
     }
 
     /// The exact sign (−1, 0, 1) of `q(α)`; see [`RealRoot::sign_with`],
@@ -793,7 +799,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 _ => {
                     let jet = model.exact_jet_at(&m);
                     let (qm, dqm) = jet.enclose();
-                    if let Some(s) = decided(self.float_taylor(&m, qm, dqm, second)) {
+                    let (ol, oh) = self.offsets(&m);
+                    if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
                         return s;
                     }
                     // The same Taylor form with its linear part kept exact:
