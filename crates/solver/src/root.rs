@@ -42,6 +42,16 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
         .max(neg_log2(w) + 2)
 }
 
+/// The most steps of one narrowing between two rounds of
+/// [`RealRoot::sign_with`]. A round asks for twice the bits of the last,
+/// as exact Newton steps double them; next to a close cluster of roots
+/// Newton gains about one bit a step, and a round asking for 2,048 bits
+/// there took 380 exact evaluations of a degree-96 `p` past the 3,360
+/// bits that decided the sign (`seed-73-case-19535`, 16.8 s). With a
+/// budget the sign is tried again after at most this many steps. No
+/// narrowing of a shipped scene takes more than 15.
+pub(crate) const SIGN_NARROW_STEPS: u32 = 32;
+
 /// The precision of [`RealRoot::sign_with`]'s multi-precision round
 /// ([`SignModel::big_jet_at`]): the round needs `q(m)` and `q′(m)` only to
 /// a few bits past the Taylor remainder, and values that cancel further
@@ -551,7 +561,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `a/b` with `b² < 1/(hi − lo)` is that rational, and is then reported
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
-        self.narrow_to(max_width);
+        let _ = self.narrow_to(max_width, u32::MAX);
         if self.sign_lo != 0 && self.may_hold_rational_root() {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
@@ -603,8 +613,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// [`RealRoot::refine_to`] without the final rational-root test: what
     /// [`RealRoot::sign_with`] needs between its rounds (the test's
     /// continued fraction costs time quadratic in the ends' bits, and the
-    /// sign decisions do not need the root to be exact).
-    fn narrow_to(&mut self, max_width: &Rat) {
+    /// sign decisions do not need the root to be exact). It stops after
+    /// `steps` steps (each one or two exact signs or one exact jet) even
+    /// short of `max_width`, and tells whether it reached it.
+    fn narrow_to(&mut self, max_width: &Rat, steps: u32) -> bool {
         // Float Newton until it reaches the root's float resolution; after
         // a failure farther out (outside its basin), a few bisections first.
         let mut float_newton = true;
@@ -637,10 +649,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let mut slivered = false;
         // The width before the last exact jump, and `lo_key` then.
         let mut jumped: Option<(Rat, (u64, u64))> = None;
-        loop {
+        for _ in 0..steps {
             let w = self.width();
             if self.sign_lo == 0 || w <= *max_width {
-                return;
+                return true;
             }
             if let Some((before, key)) = jumped.take() {
                 let stayed = (w.mul_pow2(3) > before).then(|| lo_key(self) == key);
@@ -689,6 +701,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             wait = wait.saturating_sub(1);
             self.bisect();
         }
+        self.sign_lo == 0 || self.width() <= *max_width
     }
 
     /// The sign of `q` over the enclosure `I` from the Taylor form at the
@@ -762,12 +775,17 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// usually proves `gcd(p, q) = 1` ([`SignModel::residues`]): then
     /// `q(α) ≠ 0` without forming `q` (same answer, same rounds). Between rounds the interval is refined (each
     /// step proven by exact signs of `p`): by 16 bits in the first rounds, then
-    /// by twice as many each round. docs/termination.md says why this ends.
+    /// by twice as many each round, in at most 32 steps (`SIGN_NARROW_STEPS`)
+    /// (a round after one cut short asks for the same bits again).
+    /// docs/termination.md says why this ends.
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         // Once `q(α) ≠ 0` is proven (`q` itself is formed only if the
         // Bernstein test below runs, or for a gcd the images cannot prove).
         let mut nonzero = false;
+        // The rounds whose narrowing reached its width (all but those cut
+        // short by `SIGN_NARROW_STEPS`): the gain doubles with these only.
+        let mut reached = 0u32;
         for round in 0u32.. {
             if self.sign_lo == 0 {
                 return model.sign_at(&self.lo);
@@ -839,10 +857,13 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // 16 bits a round while the floating-point forms may still
             // decide; then twice as many each round (exact Newton steps
             // double the bits anyway), so the rounds needed grow with the
-            // logarithm of the bits that `q(α) ≠ 0` takes to show.
-            let gain = 16i64 << round.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
+            // logarithm of the bits that `q(α) ≠ 0` takes to show. A
+            // narrowing cut short keeps the gain: its bits came slower.
+            let gain = 16i64 << reached.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
             let w = self.width().mul_pow2(-gain);
-            self.narrow_to(&w);
+            if self.narrow_to(&w, SIGN_NARROW_STEPS) {
+                reached += 1;
+            }
         }
         unreachable!("the loop returns")
     }

@@ -447,32 +447,68 @@ fn filtered_constant_is_decided() {
 /// [`BigInterval`](ccd_arith::BigInterval)s of `q`'s exact coefficients,
 /// rounded to the asked precision, on the exact jet's scale); without,
 /// every step takes the exact jet.
+/// It counts the exact signs and jets asked of it in `calls`; with
+/// `marks_rounds` it notes that count whenever it is asked to enclose `q`
+/// over an interval (each round of [`crate::RealRoot::sign_with`] starts
+/// so), for a quantity sharing `calls` with the root's model.
 #[derive(Clone, Debug)]
 struct NoBalls {
     probe: std::sync::Arc<crate::SignProbe>,
     big: bool,
+    calls: std::sync::Arc<Calls>,
+    marks_rounds: bool,
+}
+
+/// What [`NoBalls`] models were asked for.
+#[derive(Debug, Default)]
+struct Calls {
+    /// Exact signs and exact jets.
+    exact: std::sync::atomic::AtomicUsize,
+    /// `exact` at each enclosure asked of a model that marks rounds.
+    marks: std::sync::Mutex<Vec<usize>>,
+}
+
+impl Calls {
+    fn exact(&self) -> usize {
+        self.exact.load(std::sync::atomic::Ordering::Relaxed)
+    }
 }
 
 /// [`NoBalls`] with exact jets only.
 #[allow(non_snake_case)]
 fn ExactOnly(probe: std::sync::Arc<crate::SignProbe>) -> NoBalls {
-    NoBalls { probe, big: false }
+    NoBalls {
+        probe,
+        big: false,
+        calls: Default::default(),
+        marks_rounds: false,
+    }
 }
 
 /// [`NoBalls`] with multi-precision jets.
 #[allow(non_snake_case)]
 fn BigOnly(probe: std::sync::Arc<crate::SignProbe>) -> NoBalls {
-    NoBalls { probe, big: true }
+    NoBalls {
+        big: true,
+        ..ExactOnly(probe)
+    }
 }
 
 impl crate::SignModel for NoBalls {
     fn enclose(&self, x: Interval) -> Interval {
+        if self.marks_rounds && x.lo < x.hi {
+            let n = self.calls.exact();
+            self.calls.marks.lock().expect("not poisoned").push(n);
+        }
         self.probe.enclose(x)
     }
     fn enclose_second(&self, x: Interval) -> Interval {
         self.probe.enclose_second(x)
     }
     fn exact_jet_at(&self, m: &Rat) -> crate::ExactJet {
+        self.calls
+            .exact
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         self.probe.exact_jet_at(m)
     }
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<crate::BallJet<ccd_arith::BigInterval>> {
@@ -504,6 +540,9 @@ impl crate::SignModel for NoBalls {
         self.probe.approx_value_and_slope(x)
     }
     fn sign_at(&self, x: &Rat) -> i32 {
+        self.calls
+            .exact
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         self.probe.sign_at(x)
     }
     fn admits_root_at(&self, x: &Rat) -> bool {
@@ -512,6 +551,46 @@ impl crate::SignModel for NoBalls {
     fn exact(&self) -> &ZPoly {
         self.probe.exact()
     }
+}
+
+/// Between two rounds of a sign decision the narrowing takes at most
+/// `SIGN_NARROW_STEPS` steps, however many bits the round asked for: at
+/// a root next to a tight cluster, `α = 1/3 + 2^(−1200)` of
+/// `(3·2^1200·t − 2^1200)³ − 27` (its complex pair `2^(−1200)·√3` away),
+/// where every step gains about a bit until the enclosure is far below
+/// `2^(−1200)`, the sign of `t − c` with `c = α − 2^(−600)` is decided
+/// right, and no round is followed by more than 3 exact evaluations a
+/// step (a jet and two cut signs): about 70 a round, 1,190 in all, the
+/// enclosure `2^(−641)` wide at the end. Without the budget the rounds
+/// asking for 256 and 512 bits took 620 and 1,260, 2,446 in all, down to
+/// `2^(−1045)`.
+#[test]
+fn sign_rounds_narrow_a_bounded_number_of_steps() {
+    let k = 1200u64;
+    let two_k = Int::one().shl(k);
+    let cube = ZPoly::new(vec![-two_k.clone(), Int::from(3) * &two_k]).pow(3);
+    let p = &cube - &ZPoly::from_i64s(&[27]);
+    let alpha = &Rat::from_frac(1, 3) + &pow2(k);
+    // [1/4, 1/2] isolates α, the only real root.
+    let (lo, hi) = (Rat::from_frac(1, 4), Rat::from_frac(1, 2));
+    assert!(p.sign_at(&lo) < 0 && p.sign_at(&hi) > 0);
+    let base = ExactOnly(std::sync::Arc::new(crate::SignProbe::new(&p)));
+    let mut r = crate::RealRoot::isolated(base.clone(), lo, hi, -1);
+    let c = &alpha - &pow2(k / 2);
+    let q = NoBalls {
+        calls: base.calls.clone(),
+        marks_rounds: true,
+        ..ExactOnly(std::sync::Arc::new(crate::SignProbe::new(&linear(&c))))
+    };
+    assert_eq!(r.sign_with(&q), 1);
+    let mut marks = base.calls.marks.lock().expect("not poisoned").clone();
+    marks.push(base.calls.exact());
+    let most = marks.windows(2).map(|w| w[1] - w[0]).max().unwrap_or(0);
+    let steps = super::root::SIGN_NARROW_STEPS as usize;
+    assert!((16..=64).contains(&steps), "a budget of a few dozen steps");
+    assert!(marks.len() > 8, "{marks:?}");
+    assert!(most <= 3 * steps + 2, "{most}: {marks:?}");
+    assert!(r.lo() <= &alpha && &alpha <= r.hi());
 }
 
 /// The model `M` at the scale `σ·2^(−FAINT)`: its values and enclosures
