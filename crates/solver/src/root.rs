@@ -614,8 +614,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// [`RealRoot::sign_with`] needs between its rounds (the test's
     /// continued fraction costs time quadratic in the ends' bits, and the
     /// sign decisions do not need the root to be exact). It stops after
-    /// `steps` steps (each one or two exact signs or one exact jet) even
-    /// short of `max_width`, and tells whether it reached it.
+    /// `steps` steps (each at most one exact jet and three exact signs: a
+    /// jump that did not halve the enclosure, its two cut signs and the
+    /// bisection after it) even short of `max_width`, and tells whether it
+    /// reached it.
     fn narrow_to(&mut self, max_width: &Rat, steps: u32) -> bool {
         // Float Newton until it reaches the root's float resolution; after
         // a failure farther out (outside its basin), a few bisections first.

@@ -559,8 +559,11 @@ impl crate::SignModel for NoBalls {
 /// `(3·2^1200·t − 2^1200)³ − 27` (its complex pair `2^(−1200)·√3` away),
 /// where every step gains about a bit until the enclosure is far below
 /// `2^(−1200)`, the sign of `t − c` with `c = α − 2^(−600)` is decided
-/// right, and no round is followed by more than 3 exact evaluations a
-/// step (a jet and two cut signs): about 70 a round, 1,190 in all, the
+/// right, and no round is followed by more than `3·SIGN_NARROW_STEPS + 2`
+/// exact evaluations (a jump that does not halve the enclosure costs a jet,
+/// two cut signs and a bisection, and is followed by at least three steps
+/// of one sign each; plus the round's own jet of `q`, which shares the
+/// count): about 70 a round, 1,190 in all, the
 /// enclosure `2^(−641)` wide at the end. Without the budget the rounds
 /// asking for 256 and 512 bits took 620 and 1,260, 2,446 in all, down to
 /// `2^(−1045)`.
