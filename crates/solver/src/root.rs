@@ -42,6 +42,44 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
         .max(neg_log2(w) + 2)
 }
 
+/// The sign of `q` on `[lo, hi]` by Descartes' rule: `Some` when `q`'s
+/// exact Bernstein coefficients there have no sign variation and the
+/// first is nonzero (then `q` has no root in `[lo, hi]`).
+pub(crate) fn descartes(q: &ZPoly, lo: &Rat, hi: &Rat) -> Option<i32> {
+    let b = Bernstein::signs_of_power(q, lo, hi);
+    (sign_variations(b.iter().copied()) == 0 && b[0] != 0).then(|| b[0])
+}
+
+/// `[lo, hi]` (of width `width`) rounded outward to the grid `2^(−k)`,
+/// `k` two bits past its width's, when that makes the ends markedly shorter (a quarter of their
+/// bits or more); `None` otherwise. A root narrowed by Newton steps next
+/// to a cluster can have ends four times as long as its width needs,
+/// and the Bernstein coefficients' cost grows with the ends' bits.
+pub(crate) fn short_ends(lo: &Rat, hi: &Rat, width: &Rat) -> Option<(Rat, Rat)> {
+    let k = neg_log2(width) + 2;
+    let bits = |x: &Rat| x.numer().bits() + x.denom().bits();
+    // The grid's ends have about `2k` bits each (below 1 in size): skip
+    // the rounding where it cannot shorten them enough.
+    let long = bits(lo) + bits(hi);
+    if 3 * long < 16 * k as u64 {
+        return None;
+    }
+    let lo_k = Rat::dyadic(lo.mul_pow2(k).floor(), k as u64);
+    let hi_k = Rat::dyadic(-(-hi.mul_pow2(k)).floor(), k as u64);
+    (4 * (bits(&lo_k) + bits(&hi_k)) <= 3 * long).then_some((lo_k, hi_k))
+}
+
+/// [`descartes`] on `[lo, hi]`, tried first on its [`short_ends`]. No
+/// variation over that wider interval means none over `[lo, hi]`
+/// (subdivision diminishes variation), and the first coefficients have
+/// the same sign, as `q` has no root between the two left ends: so it
+/// decides only where the test over `[lo, hi]` would, as it would.
+pub(crate) fn descartes_sign(q: &ZPoly, lo: &Rat, hi: &Rat, width: &Rat) -> Option<i32> {
+    short_ends(lo, hi, width)
+        .and_then(|(l, h)| descartes(q, &l, &h))
+        .or_else(|| descartes(q, lo, hi))
+}
+
 /// The most steps of one narrowing between two rounds of
 /// [`RealRoot::sign_with`]. A round asks for twice the bits of the last,
 /// as exact Newton steps double them; next to a close cluster of roots
@@ -850,10 +888,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // (and whenever that bound overflowed).
             let scheduled =
                 round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
+            let width = self.width();
             if nonzero && (scheduled || !second.is_finite()) {
-                let b = Bernstein::signs_of_power(model.exact(), &self.lo, &self.hi);
-                if sign_variations(b.iter().copied()) == 0 && b[0] != 0 {
-                    return b[0];
+                if let Some(s) = descartes_sign(model.exact(), &self.lo, &self.hi, &width) {
+                    return s;
                 }
             }
             // 16 bits a round while the floating-point forms may still
@@ -862,7 +900,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // logarithm of the bits that `q(α) ≠ 0` takes to show. A
             // narrowing cut short keeps the gain: its bits came slower.
             let gain = 16i64 << reached.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
-            let w = self.width().mul_pow2(-gain);
+            let w = width.mul_pow2(-gain);
             if self.narrow_to(&w, SIGN_NARROW_STEPS) {
                 reached += 1;
             }

@@ -596,6 +596,61 @@ fn sign_rounds_narrow_a_bounded_number_of_steps() {
     assert!(r.lo() <= &alpha && &alpha <= r.hi());
 }
 
+/// `n/2^k` plus a fraction of the next cell with a long denominator: an
+/// end with about four times the bits its interval's width `2^(−k)` needs,
+/// as Newton steps next to a cluster leave them.
+fn long_end(n: i64, k: u64, s: u64) -> Rat {
+    let j = (2 * k) as u32 + 1; // 3^j has about 3.2k bits
+    let three = Int::from(3).pow(j);
+    let frac = Rat::new(Int::from(s), three).expect("nonzero") * pow2(k + 2);
+    &Rat::dyadic(Int::from(n), k) + &frac
+}
+
+/// Descartes' rule on the enclosure's ends rounded outward to a short grid
+/// decides only where the exact ends would, and as they would: the wider
+/// interval's ends enclose the exact ones, and its verdict, when it has
+/// one, is the exact ends' (`descartes_sign` is always theirs).
+#[test]
+fn short_ends_decide_as_the_exact_ends_do() {
+    let q = linear(&Rat::from_frac(1, 3));
+    let (lo, hi) = (
+        long_end(1 << 39, 40, 12345),
+        long_end((1 << 39) + 1, 40, 777),
+    );
+    let width = &hi - &lo;
+    let (l, h) = super::root::short_ends(&lo, &hi, &width).expect("markedly shorter");
+    assert!(l <= lo && hi <= h, "{l} {lo} {hi} {h}");
+    assert_eq!(super::root::descartes(&q, &l, &h), Some(1));
+    assert_eq!(super::root::descartes(&q, &lo, &hi), Some(1));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+    /// The same on random polynomials with rational roots near random
+    /// intervals `2^(−k)` wide whose ends are four times longer than that.
+    #[test]
+    fn short_ends_never_decide_otherwise(
+        roots in proptest::collection::vec((0i64..=40, 1i64..=41), 1..5),
+        k in 6u64..90, cell in 0.0f64..1.0, s1 in 1u64..1_000_000, s2 in 1u64..1_000_000,
+        cells in 1i64..4,
+    ) {
+        use super::root::{descartes, descartes_sign, short_ends};
+        let q = product(&roots.iter().map(|&(a, b)| (Rat::from_frac(a.min(b), b), 1)).collect::<Vec<_>>());
+        let n = (cell * (1u64 << k.min(60)) as f64) as i64;
+        let scale = k.min(60);
+        let (lo, hi) = (long_end(n, scale, s1), long_end(n + cells, scale, s2));
+        let width = &hi - &lo;
+        let exact = descartes(&q, &lo, &hi);
+        if let Some((l, h)) = short_ends(&lo, &hi, &width) {
+            prop_assert!(l <= lo && hi <= h);
+            if let Some(s) = descartes(&q, &l, &h) {
+                prop_assert_eq!(exact, Some(s));
+            }
+        }
+        prop_assert_eq!(descartes_sign(&q, &lo, &hi, &width), exact);
+    }
+}
+
 /// The model `M` at the scale `σ·2^(−FAINT)`: its values and enclosures
 /// far below `f64`'s range, as a closed form's of long numbers can be
 /// (the enclosures underflow to the smallest normal bounds, `f64` Newton
