@@ -361,12 +361,6 @@ impl ClosedForm {
         })
     }
 
-    /// The closed form of the exact jets `(F_k, G_k)` in double-word
-    /// balls, balanced into `f64`'s range ([`balancing`]) and scaled back
-    /// exactly into `prec`-bit intervals: about 100 bits of `Q(F + εG)`
-    /// past the closed form's cancellation, at a tenth of the cost of
-    /// intervals; `None` when a ball leaves `f64`'s range all the same or
-    /// keeps fewer than 60 bits.
     /// The exponent `scale` of the jets at a dyadic point `a/2^j`:
     /// `σ·(q(m), q′(m)) = Q(F + εG)·2^(−scale)` ([`SignModel::exact_jet_at`]).
     fn jet_scale(&self, j: i64) -> i64 {
@@ -389,6 +383,12 @@ impl ClosedForm {
         (self.of(&balanced), undo)
     }
 
+    /// The closed form of the exact jets `(F_k, G_k)` in double-word
+    /// balls, balanced into `f64`'s range ([`balancing`]) and scaled back
+    /// exactly into `prec`-bit intervals: about 100 bits of `Q(F + εG)`
+    /// past the closed form's cancellation, at a tenth of the cost of
+    /// intervals; `None` when a ball leaves `f64`'s range all the same or
+    /// keeps fewer than 60 bits.
     fn balanced_exact(&self, jets: &[Dual<Int>; 5], prec: u32) -> Option<Dual<BigInterval>> {
         let (q, undo) = self.balanced_of(
             |i| (!jets[i].v.is_zero()).then(|| jets[i].v.bits() as f64),

@@ -74,12 +74,12 @@ impl ExactJet {
 /// with balls).
 pub const BALL_WORTH: u64 = 4096;
 
-/// `(p(x), p′(x))` by Horner's rule over balls, for coefficients low →
-/// high (zero for none).
-pub fn ball_horner(coeffs: &[DwBall], x: &DwBall) -> Dual<DwBall> {
+/// `(p(x), p′(x))` by Horner's rule over balls (double-word, or any ring
+/// of enclosures), for coefficients low → high (zero for none).
+pub fn ball_horner<B: RingOps>(coeffs: &[B], x: &B) -> Dual<B> {
     let mut it = coeffs.iter().rev();
-    let mut v = it.next().copied().unwrap_or_else(DwBall::zero);
-    let mut d = DwBall::zero();
+    let mut v = it.next().cloned().unwrap_or_else(B::zero);
+    let mut d = B::zero();
     for c in it {
         d = d.times(x).plus(&v);
         v = v.times(x).plus(c);

@@ -13,16 +13,23 @@ use std::sync::Arc;
 /// proven, the exact Bernstein test on `q` runs besides the enclosures.
 const EXACT_SIGN_ROUND: u32 = 3;
 
-/// The exponent `k` of an exact Newton step's grid `2^(−k)` (see
-/// [`RealRoot::exact_newton_jump`]): about `max(w², target/4)`, no finer
-/// than the Taylor model's reach (`sup|p″|·w²/|p′|`, from the slope's `f64`
-/// enclosure `slope` and `second ⊇ p″(I)`), and at least `w/4`.
 /// `−log2` of a positive rational, rounded up (within one bit), from bit
 /// lengths alone.
 fn neg_log2(r: &Rat) -> i64 {
     (r.denom().bits() as i64 - r.numer().bits() as i64 + 1).max(0)
 }
 
+/// The exponent `k` of an exact Newton step's grid `2^(−k)` from the `−log2`
+/// of `w²`, of the target and of `w`, and the model's reach `model_k`:
+/// about `max(w², target/4)`, no finer than the reach, and at least `w/4`.
+fn step_grid(w_sq: i64, target: i64, model_k: i64, w: i64) -> i64 {
+    w_sq.min(target + 2).min(model_k).max(w + 2)
+}
+
+/// The exponent `k` of an exact Newton step's grid `2^(−k)` (see
+/// [`RealRoot::exact_newton_jump`]): [`step_grid`] with the Taylor
+/// model's reach (`sup|p″|·w²/|p′|`, from the slope's `f64` enclosure
+/// `slope` and `second ⊇ p″(I)`).
 fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> i64 {
     // The model's remainder at any cut is below sup|p″(I)|·w²/2, and a
     // cut δ from the root has a linear part near |p′|·δ: cuts closer
@@ -36,10 +43,7 @@ fn newton_exponent(w: &Rat, target: &Rat, slope: Interval, second: Interval) -> 
     } else {
         i64::MAX
     };
-    neg_log2(&(w * w))
-        .min(neg_log2(target) + 2)
-        .min(model_k)
-        .max(neg_log2(w) + 2)
+    step_grid(neg_log2(&(w * w)), neg_log2(target), model_k, neg_log2(w))
 }
 
 /// The sign of `q` on `[lo, hi]` by Descartes' rule: `Some` when `q`'s
@@ -51,10 +55,11 @@ pub(crate) fn descartes(q: &ZPoly, lo: &Rat, hi: &Rat) -> Option<i32> {
 }
 
 /// `[lo, hi]` (of width `width`) rounded outward to the grid `2^(−k)`,
-/// `k` two bits past its width's, when that makes the ends markedly shorter (a quarter of their
-/// bits or more); `None` otherwise. A root narrowed by Newton steps next
-/// to a cluster can have ends four times as long as its width needs,
-/// and the Bernstein coefficients' cost grows with the ends' bits.
+/// `k` two bits past its width's, when that makes the ends markedly
+/// shorter (a quarter of their bits or more); `None` otherwise. A root
+/// narrowed by Newton steps next to a cluster can have ends four times as
+/// long as its width needs, and the Bernstein coefficients' cost grows
+/// with the ends' bits.
 pub(crate) fn short_ends(lo: &Rat, hi: &Rat, width: &Rat) -> Option<(Rat, Rat)> {
     let k = neg_log2(width) + 2;
     let bits = |x: &Rat| x.numer().bits() + x.denom().bits();
@@ -402,8 +407,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // bit lengths alone, within two bits) past the bits the value
         // `p(m) ≈ p′·(m − α)` cancels to, about the enclosure's, which
         // `δ = p(m)/p′(m)` is short of by as many.
-        let (wb, tb) = (neg_log2(w), neg_log2(target));
-        let k = (2 * wb).min(tb + 2).max(wb + 2) + 2;
+        let wb = neg_log2(w);
+        let k = step_grid(2 * wb, neg_log2(target), i64::MAX, wb) + 2;
         let prec = u32::try_from(k + i64::from(NEWTON_BALL_MARGIN)).unwrap_or(u32::MAX);
         if let Some(jet) = self.base.big_jet_at(&m, prec) {
             if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
@@ -599,7 +604,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `a/b` with `b² < 1/(hi − lo)` is that rational, and is then reported
     /// exactly (one exact evaluation).
     pub fn refine_to(&mut self, max_width: &Rat) {
-        let _ = self.narrow_to(max_width, u32::MAX);
+        self.narrow_to(max_width, u32::MAX);
         if self.sign_lo != 0 && self.may_hold_rational_root() {
             let s = Rat::simplest_in(&self.lo, &self.hi);
             if s != self.lo
