@@ -20,12 +20,14 @@
 mod ball;
 mod filter_bernstein;
 mod isolate;
+mod local;
 mod model;
 mod root;
 mod scaled;
 
 pub use ball::JetBall;
 pub use isolate::{RootIter, MAX_EXACT_WORK};
+pub use local::LOCAL_WORTH;
 pub use model::{ball_horner, ball_view, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH};
 pub use root::RealRoot;
 pub use scaled::ScaledPoly;

@@ -3,10 +3,11 @@
 //! is asked for at a root ([`SignModel`]); [`SignProbe`], the model of an
 //! explicit polynomial; [`ExactJet`], exact values at a dyadic point.
 
+use crate::local::{costly, Local, LOCAL_SIGN_BITS};
 use crate::scaled::ScaledPoly;
 use ccd_arith::{BigInterval, Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::{Residues, ZPoly};
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// A polynomial `q` prepared for exact sign decisions at many roots
 /// ([`RealRoot::sign_with`](crate::RealRoot::sign_with)): with its `f64` view (one conversion of every
@@ -20,7 +21,23 @@ pub struct SignProbe {
     sq: ScaledPoly,
     /// `q·2^(−shift)` in double-word balls (low → high), on first need.
     balls: OnceLock<Vec<DwBall>>,
+    /// `q` re-centred next to the points of its costly exact evaluations
+    /// ([`Local`]), shared by the clones.
+    local: Arc<Mutex<Recentred>>,
 }
+
+/// [`SignProbe`]'s re-centred model and the costly exact evaluations it
+/// did not decide since it was built.
+#[derive(Debug, Default)]
+struct Recentred {
+    model: Option<Local>,
+    misses: u32,
+}
+
+/// Costly exact evaluations the re-centred model did not decide (or that
+/// came before there was one) before it is re-centred at the next one:
+/// building it costs about four of them.
+const LOCAL_MISSES: u32 = 2;
 
 impl SignProbe {
     /// Prepares `q`.
@@ -33,7 +50,34 @@ impl SignProbe {
             sq: ScaledPoly::new(&q),
             q,
             balls: OnceLock::new(),
+            local: Arc::default(),
         }
+    }
+
+    /// `read` on the re-centred model at a costly point `x`: the model kept,
+    /// or, after [`LOCAL_MISSES`] costly points it did not decide, a new
+    /// one centred at the shortest dyadic within `2^(−16)·|x|`'s last bits
+    /// of `x` (at most 16 bits shorter). `None` for a cheap point, when
+    /// there is no model yet, or when `read` does not decide.
+    fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
+        if !costly(&self.q, x) {
+            return None;
+        }
+        let mut state = self.local.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(t) = state.model.as_ref().and_then(&read) {
+            return Some(t);
+        }
+
+        state.misses += 1;
+        if state.misses < LOCAL_MISSES {
+            return None;
+        }
+        state.misses = 0;
+        let k = x.dyadic_exponent()?;
+        let slack = Rat::dyadic(Int::one(), k.saturating_sub(16));
+        let centre = Rat::dyadic_in(&(x - &slack), &(x + &slack));
+        state.model = Local::new(&self.q, centre);
+        state.model.as_ref().and_then(read)
     }
 
     /// A root family's polynomial.
@@ -291,8 +335,28 @@ impl SignModel for SignProbe {
     fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
         self.sq.value_and_slope(x)
     }
+    /// On the re-centred model first when the exact evaluation is costly
+    /// ([`LOCAL_WORTH`](crate::LOCAL_WORTH)) and the model decides; exactly otherwise.
     fn sign_at(&self, x: &Rat) -> i32 {
-        self.q.sign_at(x)
+        self.recentred(x, |l| l.sign(x, &LOCAL_SIGN_BITS))
+            .unwrap_or_else(|| self.q.sign_at(x))
+    }
+    /// From the re-centred model, for a costly point ([`LOCAL_WORTH`](crate::LOCAL_WORTH));
+    /// `None` otherwise. A jet whose value holds zero does not count as
+    /// decided (its step would not be pinned down).
+    fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
+        let k = m.dyadic_exponent()? as i64;
+        let (value, slope) = self.recentred(m, |l| {
+            Some(l.jet(m, prec)).filter(|(v, _)| !v.contains_zero())
+        })?;
+        let n = self.q.degree().unwrap_or(0) as i64;
+        let shift = self.sq.shift();
+        Some(BallJet {
+            value: value.mul_pow2(-shift),
+            slope: slope.mul_pow2(-shift),
+            value_exp: shift + k * n,
+            slope_exp: shift + k * (n - 1).max(0),
+        })
     }
     fn admits_root_at(&self, x: &Rat) -> bool {
         self.q.admits_rational_root(x)

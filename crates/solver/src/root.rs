@@ -4,6 +4,7 @@
 //! decide the exact sign of any polynomial at it.
 
 use crate::ball::{JetBall, Scaled};
+use crate::local::{costly, Local, LOCAL_SIGN_BITS};
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
 use ccd_arith::{sign_variations, Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
@@ -831,6 +832,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // The rounds whose narrowing reached its width (all but those cut
         // short by `SIGN_NARROW_STEPS`): the gain doubles with these only.
         let mut reached = 0u32;
+        // `q` re-centred inside the enclosure, once the Bernstein test is
+        // costly (`LOCAL_WORTH`).
+        let mut near: Option<Option<Local>> = None;
         for round in 0u32.. {
             if self.sign_lo == 0 {
                 return model.sign_at(&self.lo);
@@ -895,8 +899,27 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
             let width = self.width();
             if nonzero && (scheduled || !second.is_finite()) {
-                if let Some(s) = descartes_sign(model.exact(), &self.lo, &self.hi, &width) {
-                    return s;
+                // Where the exact test is costly, `q` re-centred inside `I`
+                // first (built once per call): its enclosure over `I`
+                // decides about where the test would, at a fraction of
+                // the cost, and a sign it proves is the sign.
+                let q = model.exact();
+                let mut skip = false;
+                if costly(q, &self.lo) {
+                    let local = near
+                        .get_or_insert_with(|| Local::new(q, Rat::dyadic_in(&self.lo, &self.hi)));
+                    if let Some(l) = local {
+                        if let Some(s) = l.sign_over(&self.lo, &self.hi, &LOCAL_SIGN_BITS) {
+                            return s;
+                        }
+                        // A root of q in I: the test cannot decide.
+                        skip = l.changes_sign(&self.lo, &self.hi, &LOCAL_SIGN_BITS);
+                    }
+                }
+                if !skip {
+                    if let Some(s) = descartes_sign(q, &self.lo, &self.hi, &width) {
+                        return s;
+                    }
                 }
             }
             // 16 bits a round while the floating-point forms may still

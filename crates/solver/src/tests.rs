@@ -127,6 +127,53 @@ fn a_root_next_to_its_neighbour_refines_fast_and_right() {
     }
 }
 
+/// `q·2^s`: the roots and signs of `q`.
+fn times_pow2(q: &ZPoly, s: u64) -> ZPoly {
+    ZPoly::new(q.coeffs().iter().map(|c| c.shl(s)).collect())
+}
+
+/// The roots `1/3`, `1/3 + 2^(−700)` and `5/7`, and quantities whose signs
+/// there take the pair apart or sit `2^(−1500)` past a root, all times `2^(2^22 + 1000)`: every exact
+/// evaluation of them is costly (`LOCAL_WORTH`), so the roots' model is
+/// re-centred next to the pair (`SignProbe`) and each quantity inside the
+/// enclosure (`RealRoot::sign_with`). The signs are those of the
+/// polynomials themselves, and the enclosures, refined to `2^(−2000)`,
+/// hold the roots.
+#[test]
+fn costly_polynomials_get_the_exact_signs_next_to_a_pair() {
+    let s = (1 << 22) + 1000;
+    let a = Rat::from_frac(1, 3);
+    let d = pow2(700);
+    let roots = [a.clone(), &a + &d, Rat::from_frac(5, 7)];
+    let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
+    let model = std::sync::Arc::new(crate::SignProbe::new(&times_pow2(&p, s)));
+    let cuts = [&a - &d, &a + &d.mul_pow2(-1), &a + &d.mul_pow2(1)];
+    let found = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(found.len(), 3);
+    for (r, alpha) in found.iter().zip(&roots) {
+        let sign_lo = p.sign_at(r.lo());
+        let mut costly =
+            crate::RealRoot::isolated(model.clone(), r.lo().clone(), r.hi().clone(), sign_lo);
+        // And one 2^(−1500) past the root: decided only after rounds of
+        // Descartes' tests, which the re-centred quantity skips while its
+        // root is in the enclosure.
+        let past = alpha + &pow2(1500);
+        for c in cuts.iter().chain([&past]) {
+            let q = times_pow2(&linear(c), s);
+            let expected = if alpha > c { 1 } else { -1 };
+            assert_eq!(
+                costly.sign_with(&crate::SignProbe::new(&q)),
+                expected,
+                "{alpha} vs {c}"
+            );
+        }
+        let target = pow2(2000);
+        costly.refine_to(&target);
+        assert!(costly.width() <= target);
+        assert!(costly.lo() <= alpha && alpha <= costly.hi());
+    }
+}
+
 #[test]
 fn identically_zero_and_empty_interval_are_errors() {
     assert!(matches!(
