@@ -23,8 +23,8 @@ use ccd_poly::ZPoly;
 /// scene's polynomials reach it.
 pub const LOCAL_WORTH: u64 = 1 << 23;
 
-/// Precisions at which a re-centred model is asked for a sign.
-pub(crate) const LOCAL_SIGN_BITS: [u32; 5] = [128, 512, 2048, 8192, 32768];
+/// The first precision at which a re-centred model is asked for a sign.
+const FIRST_BITS: u32 = 128;
 
 /// `q` around the dyadic centre `c = a/2^e`: `T_k = q^(k)(c)/k!`, exact.
 #[derive(Clone, Debug)]
@@ -72,17 +72,22 @@ impl Local {
 
     /// The sign of `q(x)` when an enclosure at one of `precisions` excludes
     /// zero.
-    pub(crate) fn sign(&self, x: &Rat, precisions: &[u32]) -> Option<i32> {
+    pub(crate) fn sign(&self, x: &Rat, precisions: impl IntoIterator<Item = u32>) -> Option<i32> {
         precisions
-            .iter()
-            .find_map(|&prec| self.jet(x, prec).0.sign().filter(|s| *s != 0))
+            .into_iter()
+            .find_map(|prec| self.jet(x, prec).0.sign().filter(|s| *s != 0))
     }
 
     /// The sign of `q` over `[lo, hi]` when an enclosure at one of
     /// `precisions` excludes zero: Horner's scheme on `[lo − c, hi − c]`
     /// (outward-rounded ends).
-    pub(crate) fn sign_over(&self, lo: &Rat, hi: &Rat, precisions: &[u32]) -> Option<i32> {
-        precisions.iter().find_map(|&prec| {
+    pub(crate) fn sign_over(
+        &self,
+        lo: &Rat,
+        hi: &Rat,
+        precisions: impl IntoIterator<Item = u32>,
+    ) -> Option<i32> {
+        precisions.into_iter().find_map(|prec| {
             let y = BigInterval::from_rat(&(lo - &self.centre), prec)
                 .hull(&BigInterval::from_rat(&(hi - &self.centre), prec));
             self.horner(&y).v.sign().filter(|s| *s != 0)
@@ -91,20 +96,49 @@ impl Local {
 
     /// Whether `q` is proven to change sign between `lo` and `hi` (then it
     /// has a root in between, and no test can show it has none).
-    pub(crate) fn changes_sign(&self, lo: &Rat, hi: &Rat, precisions: &[u32]) -> bool {
+    pub(crate) fn changes_sign(
+        &self,
+        lo: &Rat,
+        hi: &Rat,
+        precisions: impl IntoIterator<Item = u32> + Clone,
+    ) -> bool {
         matches!(
-            (self.sign(lo, precisions), self.sign(hi, precisions)),
+            (self.sign(lo, precisions.clone()), self.sign(hi, precisions)),
             (Some(a), Some(b)) if a != b
         )
     }
 }
 
+/// The bits of Horner's last partial sums in an exact evaluation of `q`
+/// at a point of `x`'s length (`bits q + n·bits x`), and whether that
+/// evaluation is costly: `(n + 1)` times as many at least [`LOCAL_WORTH`].
+fn exact_size(q: &ZPoly, x: &Rat) -> (u64, bool) {
+    let n = q.degree().unwrap_or(0) as u64;
+    let x_bits = x.numer().bits().max(x.denom().bits());
+    let size = q.max_bits().saturating_add(n.saturating_mul(x_bits));
+    (size, (n + 1).saturating_mul(size) >= LOCAL_WORTH)
+}
+
 /// Whether an exact evaluation of `q` at a point of `x`'s length costs
 /// [`LOCAL_WORTH`] or more.
 pub(crate) fn costly(q: &ZPoly, x: &Rat) -> bool {
-    let n = q.degree().unwrap_or(0) as u64;
-    let x_bits = x.numer().bits().max(x.denom().bits());
-    (n + 1).saturating_mul(q.max_bits().saturating_add(n.saturating_mul(x_bits))) >= LOCAL_WORTH
+    exact_size(q, x).1
+}
+
+/// The precisions at which a re-centred model of `q` is asked about a
+/// point of `x`'s length, from `first`: four times more each try, while
+/// an interval product costs less than the exact pass's (an eighth of its
+/// numbers' bits, but at least 512).
+pub(crate) fn ladder(q: &ZPoly, x: &Rat, first: u32) -> impl Iterator<Item = u32> + Clone {
+    let cap = (exact_size(q, x).0 / 8).clamp(512, u32::MAX as u64) as u32;
+    std::iter::successors(Some(first.min(cap)), move |&p| {
+        p.checked_mul(4).filter(|&next| next <= cap)
+    })
+}
+
+/// [`ladder`] from the first precision of a sign.
+pub(crate) fn sign_ladder(q: &ZPoly, x: &Rat) -> impl Iterator<Item = u32> + Clone {
+    ladder(q, x, FIRST_BITS)
 }
 
 #[cfg(test)]
@@ -137,7 +171,7 @@ mod tests {
         let below = &a - &delta;
         let above = &a + &delta.mul_pow2(1);
         for x in [&inside, &below, &above] {
-            assert_eq!(local.sign(x, &[128]), Some(q.sign_at(x)));
+            assert_eq!(local.sign(x, [128]), Some(q.sign_at(x)));
         }
         assert_eq!(q.sign_at(&inside), -q.sign_at(&below));
         // Horner's scheme over q's own coefficients cancels by some 4,000
@@ -152,10 +186,10 @@ mod tests {
         assert!(power.contains_zero());
         // Over an interval next to the pair, and across one of its roots.
         let (lo, hi) = (&a + &delta.mul_pow2(2), &a + &delta.mul_pow2(3));
-        assert_eq!(local.sign_over(&lo, &hi, &[128]), Some(q.sign_at(&lo)));
-        assert_eq!(local.sign_over(&below, &inside, &[128, 4096]), None);
-        assert!(local.changes_sign(&below, &inside, &[128]));
-        assert!(!local.changes_sign(&lo, &hi, &[128]));
+        assert_eq!(local.sign_over(&lo, &hi, [128]), Some(q.sign_at(&lo)));
+        assert_eq!(local.sign_over(&below, &inside, [128, 4096]), None);
+        assert!(local.changes_sign(&below, &inside, [128]));
+        assert!(!local.changes_sign(&lo, &hi, [128]));
     }
 
     /// A random polynomial with coefficients of up to ~460 bits, a centre
@@ -190,7 +224,7 @@ mod tests {
                 let (v, s) = local.jet(&x, prec);
                 prop_assert!(contains(&v, &q.eval_rat(&x)));
                 prop_assert!(contains(&s, &q.derivative().eval_rat(&x)));
-                if let Some(sign) = local.sign(&x, &[prec]) {
+                if let Some(sign) = local.sign(&x, [prec]) {
                     prop_assert_eq!(sign, q.sign_at(&x));
                 }
             }
@@ -205,12 +239,12 @@ mod tests {
             prop_assume!(!q.is_zero());
             let local = Local::new(&q, c).expect("a dyadic centre");
             let hi = &lo + &w;
-            if let Some(sign) = local.sign_over(&lo, &hi, &[prec]) {
+            if let Some(sign) = local.sign_over(&lo, &hi, [prec]) {
                 for x in [&lo, &hi, &(&lo + &(&w / &Rat::from(3)))] {
                     prop_assert_eq!(q.sign_at(x), sign);
                 }
             }
-            if local.changes_sign(&lo, &hi, &[prec]) {
+            if local.changes_sign(&lo, &hi, [prec]) {
                 prop_assert!(q.sign_at(&lo) * q.sign_at(&hi) < 0);
                 prop_assert_eq!(crate::root::descartes(&q, &lo, &hi), None);
             }

@@ -3,7 +3,7 @@
 //! is asked for at a root ([`SignModel`]); [`SignProbe`], the model of an
 //! explicit polynomial; [`ExactJet`], exact values at a dyadic point.
 
-use crate::local::{costly, Local, LOCAL_SIGN_BITS};
+use crate::local::{costly, ladder, sign_ladder, Local};
 use crate::scaled::ScaledPoly;
 use ccd_arith::{BigInterval, Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::{Residues, ZPoly};
@@ -56,9 +56,11 @@ impl SignProbe {
 
     /// `read` on the re-centred model at a costly point `x`: the model kept,
     /// or, after [`LOCAL_MISSES`] costly points it did not decide, a new
-    /// one centred at the shortest dyadic within `2^(−16)·|x|`'s last bits
-    /// of `x` (at most 16 bits shorter). `None` for a cheap point, when
-    /// there is no model yet, or when `read` does not decide.
+    /// one centred at the shortest dyadic within `2^(−k/2)` of `x = a/2^k`
+    /// (about half as long: the Taylor shift's cost grows with the square
+    /// of the centre's bits, and the local basis's cancellation only with
+    /// the bits from the centre to the points). `None` for a cheap point,
+    /// when there is no model yet, or when `read` does not decide.
     fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
         if !costly(&self.q, x) {
             return None;
@@ -74,7 +76,7 @@ impl SignProbe {
         }
         state.misses = 0;
         let k = x.dyadic_exponent()?;
-        let slack = Rat::dyadic(Int::one(), k.saturating_sub(16));
+        let slack = Rat::dyadic(Int::one(), k / 2);
         let centre = Rat::dyadic_in(&(x - &slack), &(x + &slack));
         state.model = Local::new(&self.q, centre);
         state.model.as_ref().and_then(read)
@@ -338,16 +340,19 @@ impl SignModel for SignProbe {
     /// On the re-centred model first when the exact evaluation is costly
     /// ([`LOCAL_WORTH`](crate::LOCAL_WORTH)) and the model decides; exactly otherwise.
     fn sign_at(&self, x: &Rat) -> i32 {
-        self.recentred(x, |l| l.sign(x, &LOCAL_SIGN_BITS))
+        self.recentred(x, |l| l.sign(x, sign_ladder(&self.q, x)))
             .unwrap_or_else(|| self.q.sign_at(x))
     }
-    /// From the re-centred model, for a costly point ([`LOCAL_WORTH`](crate::LOCAL_WORTH));
-    /// `None` otherwise. A jet whose value holds zero does not count as
-    /// decided (its step would not be pinned down).
+    /// From the re-centred model, for a costly point ([`LOCAL_WORTH`](crate::LOCAL_WORTH)),
+    /// at `prec` bits or, while its value holds zero (a step it could not
+    /// pin down), at four times as many, up to the ladder's cap; `None`
+    /// otherwise.
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
         let k = m.dyadic_exponent()? as i64;
         let (value, slope) = self.recentred(m, |l| {
-            Some(l.jet(m, prec)).filter(|(v, _)| !v.contains_zero())
+            ladder(&self.q, m, prec)
+                .map(|p| l.jet(m, p))
+                .find(|(v, _)| !v.contains_zero())
         })?;
         let n = self.q.degree().unwrap_or(0) as i64;
         let shift = self.sq.shift();

@@ -4,7 +4,7 @@
 //! decide the exact sign of any polynomial at it.
 
 use crate::ball::{JetBall, Scaled};
-use crate::local::{costly, Local, LOCAL_SIGN_BITS};
+use crate::local::{costly, sign_ladder, Local};
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
 use ccd_arith::{sign_variations, Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
@@ -899,21 +899,28 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
             let width = self.width();
             if nonzero && (scheduled || !second.is_finite()) {
-                // Where the exact test is costly, `q` re-centred inside `I`
-                // first (built once per call): its enclosure over `I`
-                // decides about where the test would, at a fraction of
-                // the cost, and a sign it proves is the sign.
+                // Where the exact test is costly, `q` re-centred next to `I`
+                // first (built once per call, at the shortest dyadic within
+                // `2^(−k/2)` of `I` for a width `2^(−k)`): its enclosure
+                // over `I` decides about where the test would, at a
+                // fraction of the cost, and a sign it proves is the sign.
                 let q = model.exact();
                 let mut skip = false;
                 if costly(q, &self.lo) {
-                    let local = near
-                        .get_or_insert_with(|| Local::new(q, Rat::dyadic_in(&self.lo, &self.hi)));
+                    let local = near.get_or_insert_with(|| {
+                        let slack = Rat::dyadic(Int::one(), neg_log2(&width).max(0) as u64 / 2);
+                        Local::new(
+                            q,
+                            Rat::dyadic_in(&(&self.lo - &slack), &(&self.hi + &slack)),
+                        )
+                    });
                     if let Some(l) = local {
-                        if let Some(s) = l.sign_over(&self.lo, &self.hi, &LOCAL_SIGN_BITS) {
+                        let ladder = sign_ladder(q, &self.lo);
+                        if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
                             return s;
                         }
                         // A root of q in I: the test cannot decide.
-                        skip = l.changes_sign(&self.lo, &self.hi, &LOCAL_SIGN_BITS);
+                        skip = l.changes_sign(&self.lo, &self.hi, ladder);
                     }
                 }
                 if !skip {
