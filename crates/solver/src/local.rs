@@ -19,9 +19,13 @@ use ccd_poly::ZPoly;
 /// The cost of an exact evaluation (coefficients times the bits of
 /// Horner's partial sums, `(n + 1)·(bits q + n·bits x)`) from which a
 /// re-centred model is tried first. The seed-73 fuzz find (degree 96,
-/// 80,000-bit coefficients, 5,000-bit points) is at 5·10^7; no shipped
-/// scene's polynomials reach it.
-pub const LOCAL_WORTH: u64 = 1 << 23;
+/// 80,000-bit coefficients, 5,000-bit points) is at 5·10^7, the slow
+/// regression `affine-degree4-entry-1e-301` at 4·10^6 (degree 59, 8,000
+/// bits, 1,000-bit points). No shipped scene reaches it: their largest,
+/// `ratio-needle-k0064-overlap`, is at 2.9·10^5, and there a lower
+/// threshold costs more than it saves (110M → 142M instructions at
+/// `2^17`: a short polynomial's exact pass is cheap).
+pub const LOCAL_WORTH: u64 = 1 << 21;
 
 /// The first precision at which a re-centred model is asked for a sign.
 const FIRST_BITS: u32 = 128;
