@@ -135,7 +135,8 @@ pub(crate) fn costly(q: &ZPoly, x: &Rat) -> bool {
 /// numbers' bits, but at least 512).
 pub(crate) fn ladder(q: &ZPoly, x: &Rat, first: u32) -> impl Iterator<Item = u32> + Clone {
     let cap = (exact_size(q, x).0 / 8).clamp(512, u32::MAX as u64) as u32;
-    std::iter::successors(Some(first.min(cap)), move |&p| {
+    // Never 0 (exact intervals): a ladder that cannot climb.
+    std::iter::successors(Some(first.clamp(1, cap)), move |&p| {
         p.checked_mul(4).filter(|&next| next <= cap)
     })
 }
@@ -235,9 +236,7 @@ mod tests {
         }
 
         /// A sign over an interval is the exact sign at its ends and
-        /// inside; a sign change proven between the ends is one, and then
-        /// Descartes' test over the interval (which the change lets
-        /// `RealRoot::sign_with` skip) could not have decided.
+        /// inside.
         #[test]
         fn signs_over_intervals_are_exact((q, c, lo, w) in case(), prec in 64u32..400) {
             prop_assume!(!q.is_zero());
@@ -248,10 +247,28 @@ mod tests {
                     prop_assert_eq!(q.sign_at(x), sign);
                 }
             }
-            if local.changes_sign(&lo, &hi, [prec]) {
-                prop_assert!(q.sign_at(&lo) * q.sign_at(&hi) < 0);
-                prop_assert_eq!(crate::root::descartes(&q, &lo, &hi), None);
-            }
+        }
+
+        /// `g·(t − r)` with `g > 0` near the interval and a simple root `r`
+        /// inside it: the sign change is proven, and Descartes' test over
+        /// the interval (which the change lets `RealRoot::sign_with` skip)
+        /// could not have decided; none is claimed for `g` alone.
+        #[test]
+        fn sign_changes_are_roots((g, c, lo, w) in case(), prec in 64u32..400) {
+            // g + 1 + Σ|g_i|·2^i > 0 on [−2, 2], where the interval lies.
+            let margin = g.coeffs().iter().enumerate().fold(Int::one(), |acc, (i, gi)| {
+                &acc + &gi.abs().shl(i as u64)
+            });
+            let g = &g + &ZPoly::new(vec![margin]);
+            let hi = &lo + &w;
+            let r = &lo + &(&w / &Rat::from(3));
+            let q = &g * &ZPoly::new(vec![-r.numer().clone(), r.denom().clone()]);
+            let ladder = [prec, 4 * prec, 16 * prec, 64 * prec];
+            let local = Local::new(&q, c.clone()).expect("a dyadic centre");
+            prop_assert!(local.changes_sign(&lo, &hi, ladder));
+            prop_assert_eq!(crate::root::descartes(&q, &lo, &hi), None);
+            let positive = Local::new(&g, c).expect("a dyadic centre");
+            prop_assert!(!positive.changes_sign(&lo, &hi, ladder));
         }
     }
 }

@@ -26,17 +26,19 @@ pub struct SignProbe {
     local: Arc<Mutex<Recentred>>,
 }
 
-/// [`SignProbe`]'s re-centred model and the costly exact evaluations it
-/// did not decide since it was built.
+/// [`SignProbe`]'s re-centred model, the costly points it did not decide
+/// since it was built, and those it did (for tests).
 #[derive(Debug, Default)]
 struct Recentred {
-    model: Option<Local>,
+    model: Option<Arc<Local>>,
     misses: u32,
+    hits: u64,
 }
 
-/// Costly exact evaluations the re-centred model did not decide (or that
-/// came before there was one) before it is re-centred at the next one:
-/// building it costs about four of them.
+/// The costly points in a row that the re-centred model does not decide
+/// (or that come before there is one) at which it is re-centred, at the
+/// last of them: the first such point alone may be a stray, and a Taylor
+/// shift costs several exact evaluations.
 const LOCAL_MISSES: u32 = 2;
 
 impl SignProbe {
@@ -55,31 +57,47 @@ impl SignProbe {
     }
 
     /// `read` on the re-centred model at a costly point `x`: the model kept,
-    /// or, after [`LOCAL_MISSES`] costly points it did not decide, a new
-    /// one centred at the shortest dyadic within `2^(−k/2)` of `x = a/2^k`
-    /// (about half as long: the Taylor shift's cost grows with the square
-    /// of the centre's bits, and the local basis's cancellation only with
-    /// the bits from the centre to the points). `None` for a cheap point,
-    /// when there is no model yet, or when `read` does not decide.
+    /// or, at the [`LOCAL_MISSES`]th costly point in a row it did not
+    /// decide, a new one centred at the shortest dyadic within `2^(−k/2)`
+    /// of `x = a/2^k` (about half as long: the Taylor shift's cost grows
+    /// with the square of the centre's bits, and the local basis's
+    /// cancellation only with the bits from the centre to the points).
+    /// `None` for a cheap or non-dyadic point, when there is no model yet,
+    /// or when `read` does not decide. The lock is held only to read or
+    /// replace the model, not while it is evaluated or built.
     fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
+        let k = x.dyadic_exponent()?;
         if !costly(&self.q, x) {
             return None;
         }
-        let mut state = self.local.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(t) = state.model.as_ref().and_then(&read) {
+        let lock = || self.local.lock().unwrap_or_else(|e| e.into_inner());
+        let model = lock().model.clone();
+        if let Some(t) = model.as_deref().and_then(&read) {
+            lock().hits += 1;
             return Some(t);
         }
-
-        state.misses += 1;
-        if state.misses < LOCAL_MISSES {
-            return None;
+        {
+            let mut state = lock();
+            state.misses += 1;
+            if state.misses < LOCAL_MISSES {
+                return None;
+            }
+            state.misses = 0;
         }
-        state.misses = 0;
-        let k = x.dyadic_exponent()?;
         let slack = Rat::dyadic(Int::one(), k / 2);
         let centre = Rat::dyadic_in(&(x - &slack), &(x + &slack));
-        state.model = Local::new(&self.q, centre);
-        state.model.as_ref().and_then(read)
+        let model = Arc::new(Local::new(&self.q, centre)?);
+        let t = read(&model);
+        let mut state = lock();
+        state.model = Some(model);
+        state.hits += u64::from(t.is_some());
+        t
+    }
+
+    /// How many costly points the re-centred model decided.
+    #[cfg(test)]
+    pub(crate) fn recentred_hits(&self) -> u64 {
+        self.local.lock().map(|s| s.hits).unwrap_or(0)
     }
 
     /// A root family's polynomial.
@@ -188,11 +206,11 @@ pub trait SignModel {
         None
     }
     /// `σ·q(m)` and `σ·q′(m)` in multi-precision intervals of about `prec`
-    /// bits, for a dyadic `m`: what [`RealRoot`](crate::RealRoot) tries
-    /// when the double-word balls do not decide (values out of `f64`'s
-    /// range, or cancelling below its 106 bits) and before the exact jet.
-    /// `None` (the default) when the model has no such view or it would
-    /// cost about as much as the exact jet.
+    /// bits or more, for a dyadic `m`: what [`RealRoot`](crate::RealRoot)
+    /// tries when the double-word balls do not decide (values out of
+    /// `f64`'s range, or cancelling below its 106 bits) and before the
+    /// exact jet. `None` (the default) when the model has no such view or
+    /// it would cost about as much as the exact jet.
     fn big_jet_at(&self, _m: &Rat, _prec: u32) -> Option<BallJet<BigInterval>> {
         None
     }
@@ -345,12 +363,16 @@ impl SignModel for SignProbe {
     }
     /// From the re-centred model, for a costly point ([`LOCAL_WORTH`](crate::LOCAL_WORTH)),
     /// at `prec` bits or, while its value holds zero (a step it could not
-    /// pin down), at four times as many, up to the ladder's cap; `None`
-    /// otherwise.
+    /// pin down), at four times as many, up to the ladder's cap (an eighth
+    /// of the exact pass's numbers' bits); `None` otherwise, and for a
+    /// `prec` past the cap, where the exact jet costs less.
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
         let k = m.dyadic_exponent()? as i64;
+        let mut precisions = ladder(&self.q, m, prec).peekable();
+        precisions.peek().filter(|&&first| first == prec)?;
         let (value, slope) = self.recentred(m, |l| {
-            ladder(&self.q, m, prec)
+            precisions
+                .clone()
                 .map(|p| l.jet(m, p))
                 .find(|(v, _)| !v.contains_zero())
         })?;

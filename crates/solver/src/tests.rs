@@ -133,15 +133,16 @@ fn times_pow2(q: &ZPoly, s: u64) -> ZPoly {
 }
 
 /// The roots `1/3`, `1/3 + 2^(−700)` and `5/7`, and quantities whose signs
-/// there take the pair apart or sit `2^(−1500)` past a root, all times `2^(2^22 + 1000)`: every exact
-/// evaluation of them is costly (`LOCAL_WORTH`), so the roots' model is
-/// re-centred next to the pair (`SignProbe`) and each quantity inside the
-/// enclosure (`RealRoot::sign_with`). The signs are those of the
-/// polynomials themselves, and the enclosures, refined to `2^(−2000)`,
-/// hold the roots.
+/// there take the pair apart or sit `2^(−1500)` past a root, all times
+/// `2^(LOCAL_WORTH/2 + 1000)`: every exact evaluation of them is costly,
+/// so the roots' model is re-centred next to the pair (`SignProbe`; the
+/// test checks that it decided points) and each quantity next to the
+/// enclosure (`RealRoot::sign_with`, whose Descartes rounds it skips while
+/// the quantity's root is inside). The signs are those of the polynomials
+/// themselves, and the enclosures, refined to `2^(−2000)`, hold the roots.
 #[test]
 fn costly_polynomials_get_the_exact_signs_next_to_a_pair() {
-    let s = (1 << 22) + 1000;
+    let s = crate::LOCAL_WORTH / 2 + 1000;
     let a = Rat::from_frac(1, 3);
     let d = pow2(700);
     let roots = [a.clone(), &a + &d, Rat::from_frac(5, 7)];
@@ -172,6 +173,7 @@ fn costly_polynomials_get_the_exact_signs_next_to_a_pair() {
         assert!(costly.width() <= target);
         assert!(costly.lo() <= alpha && alpha <= costly.hi());
     }
+    assert!(model.recentred_hits() > 10, "{}", model.recentred_hits());
 }
 
 #[test]
