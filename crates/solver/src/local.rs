@@ -113,37 +113,53 @@ impl Local {
     }
 }
 
-/// The bits of Horner's last partial sums in an exact evaluation of `q`
-/// at a point of `x`'s length (`bits q + n·bits x`), and whether that
-/// evaluation is costly: `(n + 1)` times as many at least [`LOCAL_WORTH`].
-fn exact_size(q: &ZPoly, x: &Rat) -> (u64, bool) {
-    let n = q.degree().unwrap_or(0) as u64;
-    let x_bits = x.numer().bits().max(x.denom().bits());
-    let size = q.max_bits().saturating_add(n.saturating_mul(x_bits));
-    (size, (n + 1).saturating_mul(size) >= LOCAL_WORTH)
+/// The size of an exact evaluation of a polynomial of degree `n` and
+/// coefficients of up to `bits` bits (formed once per polynomial: its
+/// costly points are asked for often).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Cost {
+    n: u64,
+    bits: u64,
 }
 
-/// Whether an exact evaluation of `q` at a point of `x`'s length costs
-/// [`LOCAL_WORTH`] or more.
-pub(crate) fn costly(q: &ZPoly, x: &Rat) -> bool {
-    exact_size(q, x).1
-}
+impl Cost {
+    /// `q`'s.
+    pub(crate) fn of(q: &ZPoly) -> Cost {
+        Cost {
+            n: q.degree().unwrap_or(0) as u64,
+            bits: q.max_bits(),
+        }
+    }
 
-/// The precisions at which a re-centred model of `q` is asked about a
-/// point of `x`'s length, from `first`: four times more each try, while
-/// an interval product costs less than the exact pass's (an eighth of its
-/// numbers' bits, but at least 512).
-pub(crate) fn ladder(q: &ZPoly, x: &Rat, first: u32) -> impl Iterator<Item = u32> + Clone {
-    let cap = (exact_size(q, x).0 / 8).clamp(512, u32::MAX as u64) as u32;
-    // Never 0 (exact intervals): a ladder that cannot climb.
-    std::iter::successors(Some(first.clamp(1, cap)), move |&p| {
-        p.checked_mul(4).filter(|&next| next <= cap)
-    })
-}
+    /// The bits of Horner's last partial sums at a point of `x`'s length
+    /// (`bits q + n·bits x`).
+    fn size(self, x: &Rat) -> u64 {
+        let x_bits = x.numer().bits().max(x.denom().bits());
+        self.bits.saturating_add(self.n.saturating_mul(x_bits))
+    }
 
-/// [`ladder`] from the first precision of a sign.
-pub(crate) fn sign_ladder(q: &ZPoly, x: &Rat) -> impl Iterator<Item = u32> + Clone {
-    ladder(q, x, FIRST_BITS)
+    /// Whether the exact evaluation at a point of `x`'s length costs
+    /// [`LOCAL_WORTH`] or more (`n + 1` partial sums of that size).
+    pub(crate) fn costly(self, x: &Rat) -> bool {
+        (self.n + 1).saturating_mul(self.size(x)) >= LOCAL_WORTH
+    }
+
+    /// The precisions at which a re-centred model is asked about a point
+    /// of `x`'s length, from `first`: four times more each try, while an
+    /// interval product costs less than the exact pass's (an eighth of its
+    /// numbers' bits, but at least 512).
+    pub(crate) fn ladder(self, x: &Rat, first: u32) -> impl Iterator<Item = u32> + Clone {
+        let cap = (self.size(x) / 8).clamp(512, u32::MAX as u64) as u32;
+        // Never 0 (exact intervals): a ladder that cannot climb.
+        std::iter::successors(Some(first.clamp(1, cap)), move |&p| {
+            p.checked_mul(4).filter(|&next| next <= cap)
+        })
+    }
+
+    /// [`Cost::ladder`] from the first precision of a sign.
+    pub(crate) fn sign_ladder(self, x: &Rat) -> impl Iterator<Item = u32> + Clone {
+        self.ladder(x, FIRST_BITS)
+    }
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! is asked for at a root ([`SignModel`]); [`SignProbe`], the model of an
 //! explicit polynomial; [`ExactJet`], exact values at a dyadic point.
 
-use crate::local::{costly, ladder, sign_ladder, Local};
+use crate::local::{Cost, Local};
 use crate::scaled::ScaledPoly;
 use ccd_arith::{BigInterval, Dual, DwBall, Int, Interval, Rat, RingOps};
 use ccd_poly::{Residues, ZPoly};
@@ -15,15 +15,30 @@ use std::sync::{Arc, Mutex, OnceLock};
 /// `q` at several roots should build it once. The roots themselves keep
 /// their squarefree polynomial this way too, shared by every root one
 /// isolation yields.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct SignProbe {
     q: ZPoly,
     sq: ScaledPoly,
     /// `q·2^(−shift)` in double-word balls (low → high), on first need.
     balls: OnceLock<Vec<DwBall>>,
+    /// The size of an exact evaluation of `q`.
+    cost: Cost,
     /// `q` re-centred next to the points of its costly exact evaluations
-    /// ([`Local`]), shared by the clones.
-    local: Arc<Mutex<Recentred>>,
+    /// ([`Local`]), on first need.
+    local: OnceLock<Mutex<Recentred>>,
+}
+
+/// A clone starts without a re-centred model (a cache).
+impl Clone for SignProbe {
+    fn clone(&self) -> SignProbe {
+        SignProbe {
+            q: self.q.clone(),
+            sq: self.sq.clone(),
+            balls: self.balls.clone(),
+            cost: self.cost,
+            local: OnceLock::new(),
+        }
+    }
 }
 
 /// [`SignProbe`]'s re-centred model, the costly points it did not decide
@@ -50,9 +65,10 @@ impl SignProbe {
     fn of(q: ZPoly) -> SignProbe {
         SignProbe {
             sq: ScaledPoly::new(&q),
+            cost: Cost::of(&q),
             q,
             balls: OnceLock::new(),
-            local: Arc::default(),
+            local: OnceLock::new(),
         }
     }
 
@@ -66,11 +82,14 @@ impl SignProbe {
     /// or when `read` does not decide. The lock is held only to read or
     /// replace the model, not while it is evaluated or built.
     fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
-        let k = x.dyadic_exponent()?;
-        if !costly(&self.q, x) {
+        if !self.cost.costly(x) {
             return None;
         }
-        let lock = || self.local.lock().unwrap_or_else(|e| e.into_inner());
+        let k = x.dyadic_exponent()?;
+        let lock = || {
+            let state = self.local.get_or_init(Mutex::default);
+            state.lock().unwrap_or_else(|e| e.into_inner())
+        };
         let model = lock().model.clone();
         if let Some(t) = model.as_deref().and_then(&read) {
             lock().hits += 1;
@@ -97,7 +116,10 @@ impl SignProbe {
     /// How many costly points the re-centred model decided.
     #[cfg(test)]
     pub(crate) fn recentred_hits(&self) -> u64 {
-        self.local.lock().map(|s| s.hits).unwrap_or(0)
+        self.local
+            .get()
+            .and_then(|s| s.lock().ok())
+            .map_or(0, |s| s.hits)
     }
 
     /// A root family's polynomial.
@@ -358,7 +380,7 @@ impl SignModel for SignProbe {
     /// On the re-centred model first when the exact evaluation is costly
     /// ([`LOCAL_WORTH`](crate::LOCAL_WORTH)) and the model decides; exactly otherwise.
     fn sign_at(&self, x: &Rat) -> i32 {
-        self.recentred(x, |l| l.sign(x, sign_ladder(&self.q, x)))
+        self.recentred(x, |l| l.sign(x, self.cost.sign_ladder(x)))
             .unwrap_or_else(|| self.q.sign_at(x))
     }
     /// From the re-centred model, for a costly point ([`LOCAL_WORTH`](crate::LOCAL_WORTH)),
@@ -368,7 +390,7 @@ impl SignModel for SignProbe {
     /// `prec` past the cap, where the exact jet costs less.
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
         let k = m.dyadic_exponent()? as i64;
-        let mut precisions = ladder(&self.q, m, prec).peekable();
+        let mut precisions = self.cost.ladder(m, prec).peekable();
         precisions.peek().filter(|&&first| first == prec)?;
         let (value, slope) = self.recentred(m, |l| {
             precisions

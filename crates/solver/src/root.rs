@@ -4,7 +4,7 @@
 //! decide the exact sign of any polynomial at it.
 
 use crate::ball::{JetBall, Scaled};
-use crate::local::{costly, sign_ladder, Local};
+use crate::local::{Cost, Local};
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
 use ccd_arith::{sign_variations, Int, Interval, Rat};
 use ccd_poly::{Bernstein, ZPoly};
@@ -917,14 +917,15 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 // scene's, where it never runs), at a fraction of the cost.
                 let q = model.exact();
                 let mut skip = false;
-                if costly(q, &self.lo) {
+                let cost = Cost::of(q);
+                if cost.costly(&self.lo) {
                     let local = near.get_or_insert_with(|| {
                         let slack = Rat::dyadic(Int::one(), neg_log2(&width).max(0) as u64 / 2);
                         let centre = Rat::dyadic_in(&(&self.lo - &slack), &(&self.hi + &slack));
                         Local::new(q, centre)
                     });
                     if let Some(l) = local {
-                        let ladder = sign_ladder(q, &self.lo);
+                        let ladder = cost.sign_ladder(&self.lo);
                         if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
                             return s;
                         }
