@@ -512,7 +512,8 @@ pub fn check(
         let (a, b) = (&json["first_contact"], &v["first_contact"]);
         // One run may know a first contact the other does not only where
         // the other stopped at a gap (the helical path's effort budget:
-        // a first-contact query stops at its first gap) and the known one
+        // a first-contact query stops at its first gap that the sphere
+        // certificates do not prove separate) and the known one
         // is not proven the earliest.
         let unknown_to = |run: &Value, known: &Value| {
             run["gaps"].as_array().is_some_and(|g| !g.is_empty())

@@ -5,11 +5,11 @@
 use crate::assemble::{assemble, Break, Walk};
 use crate::decide::possible_with;
 use crate::oracle::{At, Decided, Found, Oracle, Vanishing};
-use crate::{CcdError, Options};
+use crate::{CcdError, Item, Options};
 use ccd_arith::Rat;
 use ccd_classify::Configuration;
 use ccd_subres::Quantity;
-use ccd_timeline::{Branch, Instant, Outcome, State, Stats};
+use ccd_timeline::{Branch, Gap, Instant, Outcome, State, Stats};
 
 /// A cluster wider than `2^−16` of the span is reported as an undecided gap
 /// (its roots were not separated), a narrower one as one uncertified
@@ -165,12 +165,35 @@ fn walk_candidates<O: Oracle>(
                 Found::Failed(e) => return Err(e),
             }
         }
-        if opts.first_contact_only && !out.breaks.is_empty() {
-            out.breaks.truncate(1);
-            break;
+        if opts.first_contact_only {
+            // A gap that the oracle's other certificates prove separate
+            // throughout is no stop: the full query reads it so too (its
+            // timeline settles the gap), and the first contact lies past it.
+            while matches!(out.breaks.first(), Some(Break::Gap(lo, hi, _)) if separate_on(o, lo, hi))
+            {
+                out.breaks.remove(0);
+            }
+            if !out.breaks.is_empty() {
+                out.breaks.truncate(1);
+                break;
+            }
         }
     }
     Ok(Some(out))
+}
+
+/// Whether the oracle's certificates for gaps ([`Oracle::settle`]) prove
+/// the state separate on the whole of `[lo, hi]`.
+fn separate_on<O: Oracle>(o: &O, lo: &Rat, hi: &Rat) -> bool {
+    let gap = Item::Gap(Gap {
+        lo: lo.clone(),
+        hi: hi.clone(),
+        reason: String::new(),
+        witness: None,
+    });
+    o.settle(vec![gap])
+        .iter()
+        .all(|item| matches!(item, Item::Segment(s) if s.state == State::Separate && s.certified))
 }
 
 /// Runs Algorithm 1 of the paper on the arithmetic `o`.
