@@ -6,9 +6,9 @@
 //! Next to a tight cluster of roots the power-basis coefficients of `q`
 //! cancel by tens of thousands of bits: an interval Horner pass over them
 //! needed 16,000 to 262,144 bits there (docs/table4.md, session 15), so the
-//! exact pass was cheaper. In the local basis the terms `T_k·y^k` are no
-//! larger than the values of `q` around `c`, and cancel only by as many
-//! bits as the point is closer to a root than `c` is. The identity is exact
+//! exact pass was cheaper. In the local basis the terms `T_k·y^k` are
+//! about as large as the values of `q` around `c`, and cancel only by
+//! about as many bits as the point is closer to a root than `c` is. The identity is exact
 //! (a Taylor shift), so no remainder is bounded: every enclosure is Horner's
 //! scheme in outward-rounded intervals.
 
@@ -40,7 +40,8 @@ pub(crate) struct Local {
 impl Local {
     /// The model of `q` at the dyadic `centre` (one Taylor shift: `n²/2`
     /// products by `a`): `2^(e·n)·q(c + y) = Σ_k r_k·y^k`, so
-    /// `T_k = r_k·2^(−e·n)`. `None` for a centre that is not dyadic.
+    /// `T_k = r_k·2^(−e·n)`. `None` for a centre that is not dyadic, or
+    /// a zero `q`.
     pub(crate) fn new(q: &ZPoly, centre: Rat) -> Option<Local> {
         let e = centre.dyadic_exponent()? as i64;
         let n = q.degree()? as i64;
