@@ -19,11 +19,13 @@ pub(crate) enum Break<R> {
     Gap(Rat, Rat, &'static str),
 }
 
-/// The breaks of one walk, in order, and the quantities that vanish at its
-/// contacts.
+/// The breaks of one walk, in order, the quantities that vanish at its
+/// contacts, and whether it stopped at its last break (a first-contact
+/// query's first contact, or a gap not proven separate).
 pub(crate) struct Walk<R> {
     pub(crate) breaks: Vec<Break<R>>,
     pub(crate) zeros: &'static [Quantity],
+    pub(crate) stopped: bool,
 }
 
 impl<R> Default for Walk<R> {
@@ -31,6 +33,7 @@ impl<R> Default for Walk<R> {
         Walk {
             breaks: Vec::new(),
             zeros: &[],
+            stopped: false,
         }
     }
 }
@@ -150,10 +153,9 @@ pub(crate) fn assemble<O: Oracle>(
     let mut items: Vec<Item> = Vec::new();
     let mut roots: Vec<(Instant, Option<O::Root>)> = Vec::new();
     let breaks = walk.breaks;
-    let found_any = !breaks.is_empty();
     // A first-contact query that found a contact stops there (a gap it
     // stopped at may still be filled to t1 by the oracle's certificates).
-    let at_contact = matches!(breaks.first(), Some(Break::Contact(..)));
+    let at_contact = walk.stopped && matches!(breaks.last(), Some(Break::Contact(..)));
     if let Some((d, _)) = throughout {
         items.push(Item::Segment(Segment {
             state: d.state,
@@ -226,7 +228,7 @@ pub(crate) fn assemble<O: Oracle>(
                 }
             }
         }
-        let reached_end = !opts.first_contact_only || !found_any;
+        let reached_end = !walk.stopped;
         if let (Some(p), true) = (prev, reached_end) {
             let end = (Instant::exact(d1.clone()), Point::End);
             if between(&p, &end) {

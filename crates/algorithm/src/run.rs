@@ -109,6 +109,9 @@ fn walk_candidates<O: Oracle>(
     let mut out = Walk::default();
     let [d0, d1] = o.domain();
     let cluster_gap = (d1 - d0).mul_pow2(CLUSTER_GAP_LOG2);
+    // First contact only: the leading breaks that are gaps proven separate
+    // (no stop), and the end of the last of them when it was checked.
+    let (mut passed, mut passed_to) = (0usize, None::<Rat>);
     for found in roots {
         if !matches!(found, Found::GaveUp | Found::Failed(_)) {
             stats.candidates += 1;
@@ -167,14 +170,26 @@ fn walk_candidates<O: Oracle>(
         }
         if opts.first_contact_only {
             // A gap that the oracle's other certificates prove separate
-            // throughout is no stop: the full query reads it so too (its
-            // timeline settles the gap), and the first contact lies past it.
-            while matches!(out.breaks.first(), Some(Break::Gap(lo, hi, _)) if separate_on(o, lo, hi))
+            // throughout is no stop: the first contact lies past it. It is
+            // kept, for the timeline to settle it as the full query's does
+            // (the pieces around it are read at samples, which a gap's
+            // undecided roots would not allow across it). One that a later
+            // gap joined is checked again.
+            if passed > 0
+                && !matches!(&out.breaks[passed - 1], Break::Gap(_, hi, _) if Some(hi) == passed_to.as_ref())
             {
-                out.breaks.remove(0);
+                passed -= 1;
             }
-            if !out.breaks.is_empty() {
-                out.breaks.truncate(1);
+            while let Some(Break::Gap(lo, hi, _)) = out.breaks.get(passed) {
+                if !separate_on(o, lo, hi) {
+                    break;
+                }
+                passed_to = Some(hi.clone());
+                passed += 1;
+            }
+            if passed < out.breaks.len() {
+                out.breaks.truncate(passed + 1);
+                out.stopped = true;
                 break;
             }
         }
