@@ -13,7 +13,7 @@
 //! scheme in outward-rounded intervals.
 
 use crate::model::ball_horner;
-use ccd_arith::{BigInterval, Dual, Dyadic, Rat};
+use ccd_arith::{BigInterval, Dual, Dyadic, Int, Rat};
 use ccd_poly::ZPoly;
 
 /// The cost of an exact evaluation (coefficients times the bits of
@@ -55,6 +55,17 @@ impl Local {
             })
             .collect();
         Some(Local { centre, terms })
+    }
+
+    /// The model of `q` next to `[lo, hi]`, a dyadic interval (or point)
+    /// `2^(−k)` wide or with `k`-bit ends: centred at the shortest dyadic
+    /// within `2^(−k/2)` of it, about half as long as the points (the
+    /// Taylor shift's cost grows with the square of the centre's bits, and
+    /// the local basis's cancellation only with the bits from the centre
+    /// to the points).
+    pub(crate) fn near(q: &ZPoly, lo: &Rat, hi: &Rat, k: u64) -> Option<Local> {
+        let slack = Rat::dyadic(Int::one(), k / 2);
+        Local::new(q, Rat::dyadic_in(&(lo - &slack), &(hi + &slack)))
     }
 
     /// Horner's scheme over the `T_k` rounded to `y`'s precision, at `y`
@@ -166,7 +177,6 @@ impl Cost {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ccd_arith::Int;
     use proptest::prelude::*;
 
     fn contains(i: &BigInterval, x: &Rat) -> bool {

@@ -74,11 +74,7 @@ impl SignProbe {
 
     /// `read` on the re-centred model at a costly point `x`: the model kept,
     /// or, at the [`LOCAL_MISSES`]th costly point in a row it did not
-    /// decide, a new one centred at the shortest dyadic within `2^(−k/2)`
-    /// of `x = a/2^k` (about half as long: the Taylor shift's cost grows
-    /// with the square of the centre's bits, and the local basis's
-    /// cancellation only with the bits from the centre to the points).
-    /// `None` for a cheap or non-dyadic point, when there is no model yet,
+    /// decide, a new one next to `x = a/2^k` ([`Local::near`]). `None` for a cheap or non-dyadic point, when there is no model yet,
     /// or when `read` does not decide. The lock is held only to read or
     /// replace the model, not while it is evaluated or built.
     fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
@@ -103,9 +99,7 @@ impl SignProbe {
             }
             state.misses = 0;
         }
-        let slack = Rat::dyadic(Int::one(), k / 2);
-        let centre = Rat::dyadic_in(&(x - &slack), &(x + &slack));
-        let model = Arc::new(Local::new(&self.q, centre)?);
+        let model = Arc::new(Local::near(&self.q, x, x, k)?);
         let t = read(&model);
         let mut state = lock();
         state.model = Some(model);

@@ -906,10 +906,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
             let width = self.width();
             if nonzero && (scheduled || !second.is_finite()) {
                 // Where an exact evaluation of `q` is costly, `q`
-                // re-centred next to `I` first, once per call: at the
-                // shortest dyadic within `2^(−k/2)` of `I` for a width
-                // `2^(−k)` (re-centring it whenever the width's bits had
-                // doubled cost 0.2 s on two slow cases and gained on
+                // re-centred next to `I` first, once per call
+                // (`Local::near`; re-centring it whenever the width's bits
+                // had doubled cost 0.2 s on two slow cases and gained on
                 // none). Its enclosure over `I` decides about where the
                 // test would (a sign it proves is the sign; it may decide
                 // a round earlier, which leaves a wider enclosure than
@@ -920,9 +919,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 let cost = Cost::of(q);
                 if cost.costly(&self.lo) {
                     let local = near.get_or_insert_with(|| {
-                        let slack = Rat::dyadic(Int::one(), neg_log2(&width).max(0) as u64 / 2);
-                        let centre = Rat::dyadic_in(&(&self.lo - &slack), &(&self.hi + &slack));
-                        Local::new(q, centre)
+                        Local::near(q, &self.lo, &self.hi, neg_log2(&width).max(0) as u64)
                     });
                     if let Some(l) = local {
                         let ladder = cost.sign_ladder(&self.lo);

@@ -127,11 +127,6 @@ fn a_root_next_to_its_neighbour_refines_fast_and_right() {
     }
 }
 
-/// `q·2^s`: the roots and signs of `q`.
-fn times_pow2(q: &ZPoly, s: u64) -> ZPoly {
-    ZPoly::new(q.coeffs().iter().map(|c| c.shl(s)).collect())
-}
-
 /// The roots `1/3`, `1/3 + 2^(−700)` and `5/7`, and quantities whose signs
 /// there take the pair apart or sit `2^(−1500)` past a root, all times
 /// `2^(LOCAL_WORTH/2 + 1000)`: every exact evaluation of them is costly,
@@ -147,7 +142,8 @@ fn costly_polynomials_get_the_exact_signs_next_to_a_pair() {
     let d = pow2(700);
     let roots = [a.clone(), &a + &d, Rat::from_frac(5, 7)];
     let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
-    let model = std::sync::Arc::new(crate::SignProbe::new(&times_pow2(&p, s)));
+    let scale = Int::one().shl(s);
+    let model = std::sync::Arc::new(crate::SignProbe::new(&p.mul_int(&scale)));
     let cuts = [&a - &d, &a + &d.mul_pow2(-1), &a + &d.mul_pow2(1)];
     let found = all_roots(&p, &Rat::zero(), &Rat::one());
     assert_eq!(found.len(), 3);
@@ -160,7 +156,7 @@ fn costly_polynomials_get_the_exact_signs_next_to_a_pair() {
         // root is in the enclosure.
         let past = alpha + &pow2(1500);
         for c in cuts.iter().chain([&past]) {
-            let q = times_pow2(&linear(c), s);
+            let q = linear(c).mul_int(&scale);
             let expected = if alpha > c { 1 } else { -1 };
             assert_eq!(
                 costly.sign_with(&crate::SignProbe::new(&q)),
