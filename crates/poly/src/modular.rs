@@ -13,11 +13,20 @@
 //!    image `γ·monic(gcd_p) ≡ H (mod p)`: normalising every image to leading
 //!    coefficient `γ` makes them images of one integer polynomial, which CRT
 //!    with symmetric residues recovers once `Π p > 2·max|H_i|`.
-//! 3. Whatever the primes, a candidate `C = pp(h)` is accepted only after
-//!    exact trial division `C | a` and `C | b` in `Z[t]`. Then `C | G`, so
-//!    `deg C ≤ deg G`; and `deg C = deg gcd_p ≥ deg G` by (1). Hence `C` and
-//!    `G` are associates, both primitive with positive leading coefficient:
-//!    `C = G`. A failed verification only means more primes are needed.
+//! 3. The same images, left monic, are images of `G/lc(G) ∈ Q[t]`, whose
+//!    coefficients are fractions `n/d` with `|n|, d ≤ ‖G‖∞`. Rational
+//!    reconstruction (Wang) recovers them from a modulus `M > 2·B²` with
+//!    `B ≥ ‖G‖∞`, so about twice the bits of `G`'s own coefficients
+//!    suffice, however long `γ` is. (2) needs `M > 2·‖H‖∞`, which is
+//!    `γ/lc(G)` times more: a small gcd of polynomials with long leading
+//!    coefficients took thousands of primes that way. Both candidates are
+//!    formed from the same images; the first verified wins.
+//! 4. Whatever the primes, a candidate `C = pp(h)` of degree `deg gcd_p` is
+//!    accepted only after exact trial division `C | a` and `C | b` in
+//!    `Z[t]`. Then `C | G`, so `deg C ≤ deg G`; and `deg C = deg gcd_p ≥
+//!    deg G` by (1). Hence `C` and `G` are associates, both primitive with
+//!    positive leading coefficient: `C = G`. A failed verification only
+//!    means more primes are needed.
 //!
 //! The images may be taken of non-primitive inputs: at a prime not dividing
 //! their leading coefficients the contents are units modulo `p`, so the
@@ -25,7 +34,7 @@
 //! proves coprimality before any content is computed.
 //!
 //! Termination: all but finitely many primes are lucky, and after enough
-//! lucky primes the reconstruction equals `H`, is stable, and verifies.
+//! lucky primes the reconstruction (2) equals `H`, is stable, and verifies.
 //!
 //! [`ZPoly::gcd`] and [`ZPoly::squarefree_part`] are defined here.
 
@@ -94,30 +103,145 @@ fn symmetric(r: u64, p: u64) -> Int {
     }
 }
 
-/// Incremental CRT: the integer polynomial `h` with `|h_i| ≤ M/2` known
-/// modulo `M`, extended by the image `r` modulo `p` (plain residues).
-/// Returns whether any coefficient changed.
-fn crt_extend(h: &mut [Int], modulus: &mut Int, r: &[u64], f: &Fp) -> bool {
-    let m_inv = f.inv(f.enter(modulus.mod_u64(f.p)));
-    let mut changed = false;
-    let new_modulus = modulus.mul_i64(f.p as i64);
-    let half = new_modulus.shr_floor(1);
-    for (hi, &ri) in h.iter_mut().zip(r) {
-        // δ = (r − h)·M^{-1} mod p; plain × Montgomery-form = plain.
-        let delta = f.mul(f.sub(ri, hi.mod_u64(f.p)), m_inv);
-        if delta == 0 {
-            continue;
-        }
-        changed = true;
-        hi.add_mul(modulus, &symmetric(delta, f.p));
-        if *hi > half {
-            *hi -= &new_modulus;
-        } else if *hi < -&half {
-            *hi += &new_modulus;
+/// One step of incremental CRT, from the modulus `M` to `M·p`: the
+/// integer polynomials with `|h_i| ≤ M/2` known modulo `M`, extended by
+/// their images modulo `p`.
+struct CrtStep {
+    /// `M`.
+    modulus: Int,
+    /// `M·p`.
+    next: Int,
+    /// `⌊M·p/2⌋`.
+    half: Int,
+    /// `M^{-1} mod p`, Montgomery form.
+    m_inv: u64,
+}
+
+impl CrtStep {
+    fn new(modulus: &Int, f: &Fp) -> CrtStep {
+        let next = modulus.mul_i64(f.p as i64);
+        CrtStep {
+            modulus: modulus.clone(),
+            half: next.shr_floor(1),
+            next,
+            m_inv: f.inv(f.enter(modulus.mod_u64(f.p))),
         }
     }
-    *modulus = new_modulus;
-    changed
+
+    /// `h` (known modulo `M`) extended by its image `r` modulo `p` (plain
+    /// residues) to the one of `(−M·p/2, M·p/2]`. Returns whether any
+    /// coefficient changed.
+    fn extend(&self, h: &mut [Int], r: &[u64], f: &Fp) -> bool {
+        let mut changed = false;
+        for (hi, &ri) in h.iter_mut().zip(r) {
+            // δ = (r − h)·M^{-1} mod p; plain × Montgomery-form = plain.
+            let delta = f.mul(f.sub(ri, hi.mod_u64(f.p)), self.m_inv);
+            if delta == 0 {
+                continue;
+            }
+            changed = true;
+            hi.add_mul(&self.modulus, &symmetric(delta, f.p));
+            if *hi > self.half {
+                *hi -= &self.next;
+            } else if *hi < -&self.half {
+                *hi += &self.next;
+            }
+        }
+        changed
+    }
+}
+
+/// Moduli up to this many bits are tried by rational reconstruction
+/// ([`rational_candidate`], module docs (3)); past it the scaled
+/// reconstruction (2) goes on alone. A small gcd is found far below it.
+const RATIONAL_MAX_BITS: u64 = 1 << 16;
+
+/// The most images rational reconstruction is tried from, for inputs whose
+/// images cost `image_words` word products a prime
+/// (`limbs·(deg a + deg b + 2)`) and `γ` of `gamma_bits` bits: a cost rule
+/// only (the candidate is proven by trial division either way). The scaled lift (2) needs
+/// `M > 2·‖H‖∞ ≥ 2·γ`, so at least `P = bits(γ)/62` primes, `P` images.
+/// An attempt from `k` images costs about as much as `285·k²` image words
+/// (the Euclidean algorithm on `62·k`-bit numbers, [`wang`]: ~2,000
+/// instructions per `k²` against ~7 per image word, measured at 500 bits on
+/// `graze-turned-k100-miss`), and the attempts up to `k` (geometric, see
+/// [`try_rational_at`]) about 2.5 times the last; so they stop at `k² ≤
+/// P·image_words/20000`, a thirtieth of those `P` images (a tenth cost
+/// `graze-turned-k100-miss`, whose gcd needs 56 primes one way and 48 the
+/// other, 1.1 % of its query). Never past [`RATIONAL_MAX_BITS`] of modulus.
+fn rational_until(gamma_bits: u64, image_words: u64) -> usize {
+    let budget = (gamma_bits / 62).saturating_mul(image_words) / 20000;
+    let k = (budget as f64).sqrt() as u64;
+    k.min(RATIONAL_MAX_BITS / 62) as usize
+}
+
+/// Whether `count` images are a point to try rational reconstruction: 1, 2,
+/// 3, 4, 6, 8, 12, … (a power of two or three times one), so the attempts
+/// cost a constant factor over the last one.
+fn try_rational_at(count: usize) -> bool {
+    let odd = count >> count.trailing_zeros();
+    odd == 1 || odd == 3
+}
+
+/// Wang's rational reconstruction: for `0 ≤ x < m`, the fraction `n/d`
+/// with `n ≡ d·x (mod m)`, `|n| ≤ b` and `0 < d ≤ b`, from the extended
+/// Euclidean algorithm on `(m, x)` stopped at the first remainder `≤ b`
+/// (the remainder is `n`, its cofactor of `x` is `d` up to sign). When
+/// `2·b² < m` such a fraction is unique, so this is it; `None` when there is
+/// none.
+fn wang(x: &Int, m: &Int, b: &Int) -> Option<(Int, Int)> {
+    let (mut r0, mut r1) = (m.clone(), x.clone());
+    let (mut t0, mut t1) = (Int::zero(), Int::one());
+    while r1 > *b {
+        let (q, r) = r0.div_rem_trunc(&r1);
+        let t = &t0 - &(&q * &t1);
+        (r0, r1, t0, t1) = (r1, r, t1, t);
+    }
+    if t1.is_zero() || t1.abs() > *b {
+        return None;
+    }
+    Some(if t1.is_negative() {
+        (-r1, -t1)
+    } else {
+        (r1, t1)
+    })
+}
+
+/// The primitive integer polynomial whose monic form has the residues
+/// `monic` (symmetric, modulo `modulus`), by rational reconstruction
+/// (module docs (3)): with `B = 2^⌊(bits M − 2)/2⌋` (so `2·B² < M`), each
+/// coefficient times the common denominator `D` found so far is a residue
+/// `x`, taken as it is when `|x| ≤ B`, else as the fraction `n/d` of
+/// [`wang`], with `D·d ≤ B`. `None` when a coefficient has no such
+/// fraction (more primes needed). A candidate only: the caller proves it
+/// by trial division.
+fn rational_candidate(monic: &[Int], modulus: &Int) -> Option<ZPoly> {
+    let bound = Int::one().shl(modulus.bits().saturating_sub(2) / 2);
+    let half = modulus.shr_floor(1);
+    let mut den = Int::one();
+    let mut nums: Vec<Int> = Vec::with_capacity(monic.len());
+    for c in monic {
+        let scaled = c * &den;
+        let x = &scaled - &(&scaled.div_floor(modulus) * modulus);
+        if x <= bound {
+            nums.push(x);
+            continue;
+        }
+        if x > half && &x - modulus >= -&bound {
+            nums.push(&x - modulus);
+            continue;
+        }
+        let (n, d) = wang(&x, modulus, &bound)?;
+        den = &den * &d;
+        if den > bound {
+            return None;
+        }
+        for v in &mut nums {
+            *v = &*v * &d;
+        }
+        nums.push(n);
+    }
+    Some(ZPoly::new(nums).primitive_part())
 }
 
 /// The coefficients (as limbs) modulo `f.p`, in Montgomery form.
@@ -160,15 +284,21 @@ pub(crate) fn squarefree_by_prime(a: &ZPoly) -> bool {
 /// `gcd(a, b)` over `Q[t]`, primitive with positive leading coefficient;
 /// see the module documentation for the algorithm and its proof.
 pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
+    gcd_counted(a, b).0
+}
+
+/// [`gcd`] and the number of primes whose images it took.
+fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
     let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
-        return if a.is_zero() {
+        let g = if a.is_zero() {
             b.primitive_part()
         } else {
             a.primitive_part()
         };
+        return (g, 0);
     };
     if da == 0 || db == 0 {
-        return ZPoly::one();
+        return (ZPoly::one(), 0);
     }
     // The images are taken of `a` and `b` as given, at primes `p ∤ lc(a)·lc(b)`:
     // then `p` divides neither content, so the monic `gcd(a mod p, b mod p)`
@@ -178,9 +308,10 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
-    let mut primitive: Option<(ZPoly, ZPoly, Int)> = None;
-    // The current reconstruction: its degree, coefficients and modulus.
-    let mut best: Option<(usize, Vec<Int>, Int)> = None;
+    let mut primitive: Option<(ZPoly, ZPoly, Int, usize)> = None;
+    // The images of the lowest degree seen, lifted both ways.
+    let mut best: Option<Images> = None;
+    let mut used = 0;
     for index in 0.. {
         let f = Fp::new(ntt_prime(index).p);
         if lca.mod_u64(f.p) == 0 || lcb.mod_u64(f.p) == 0 {
@@ -188,39 +319,99 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
         }
         let weights = f.limb_weights(max_limbs);
         let g = gcd_mod_p(image(&sa, &f, &weights), image(&sb, &f, &weights), &f);
+        used += 1;
         let d = g.len() - 1;
         if d == 0 {
-            return ZPoly::one();
+            return (ZPoly::one(), used);
         }
-        let (pa, pb, gamma) = primitive.get_or_insert_with(|| {
+        let (pa, pb, gamma, until) = primitive.get_or_insert_with(|| {
             let (pa, pb) = (a.primitive_part(), b.primitive_part());
             let gamma = pa
                 .leading()
                 .expect("nonzero")
                 .gcd(pb.leading().expect("nonzero"));
-            (pa, pb, gamma)
+            let until = rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
+            (pa, pb, gamma, until)
         });
-        // γ·monic(g), plain residues.
+        let until = *until;
+        // monic(g) (while rational reconstruction is tried) and γ·monic(g),
+        // plain residues.
+        let monic: Vec<u64> = match until {
+            0 => Vec::new(),
+            _ => g.iter().map(|&x| f.leave(x)).collect(),
+        };
         let gamma_m = f.enter(gamma.mod_u64(f.p));
-        let image: Vec<u64> = g.iter().map(|&x| f.leave(f.mul(x, gamma_m))).collect();
-        match &mut best {
-            Some((bd, h, modulus)) if *bd == d => {
-                if crt_extend(h, modulus, &image, &f) {
-                    continue;
-                }
-                let cand = ZPoly::new(h.clone()).primitive_part();
-                if pa.div_exact(&cand).is_some() && pb.div_exact(&cand).is_some() {
-                    return cand;
-                }
+        let scaled: Vec<u64> = g.iter().map(|&x| f.leave(f.mul(x, gamma_m))).collect();
+        let divides = |c: &ZPoly| pa.div_exact(c).is_some() && pb.div_exact(c).is_some();
+        let (images, first) = match &mut best {
+            Some(images) if images.degree == d => (images, false),
+            Some(images) if images.degree < d => continue,
+            _ => (best.insert(Images::new(d, &monic, &scaled, f.p)), true),
+        };
+        // The scaled lift is tried once an image no longer changes it.
+        if !first && !images.extend(&monic, &scaled, &f, images.count < until) {
+            let cand = ZPoly::new(images.scaled.clone()).primitive_part();
+            if divides(&cand) {
+                return (cand, used);
             }
-            Some((bd, _, _)) if *bd < d => continue,
-            _ => {
-                let h = image.iter().map(|&r| symmetric(r, f.p)).collect();
-                best = Some((d, h, Int::from_u64(f.p)));
+        }
+        if images.count <= until && try_rational_at(images.count) {
+            if let Some(cand) = rational_candidate(&images.monic, &images.modulus) {
+                if images.tried.as_ref() != Some(&cand) {
+                    if divides(&cand) {
+                        return (cand, used);
+                    }
+                    images.tried = Some(cand);
+                }
             }
         }
     }
     unreachable!("the prime loop only ends by returning")
+}
+
+/// The images of `gcd(a, b)` of one degree, lifted by CRT both ways of the
+/// module docs: `γ·monic` to integers (2), `monic` for rational
+/// reconstruction (3).
+struct Images {
+    degree: usize,
+    /// `γ·monic(gcd_p)`, symmetric residues modulo `modulus`.
+    scaled: Vec<Int>,
+    /// `monic(gcd_p)`, symmetric residues modulo `modulus` (while rational
+    /// reconstruction is still tried, [`rational_until`]).
+    monic: Vec<Int>,
+    /// The product of the primes of these images.
+    modulus: Int,
+    /// How many primes.
+    count: usize,
+    /// The last rational candidate that failed trial division.
+    tried: Option<ZPoly>,
+}
+
+impl Images {
+    /// The first image, modulo `p` (plain residues).
+    fn new(degree: usize, monic: &[u64], scaled: &[u64], p: u64) -> Images {
+        let lift = |r: &[u64]| r.iter().map(|&x| symmetric(x, p)).collect();
+        Images {
+            degree,
+            scaled: lift(scaled),
+            monic: lift(monic),
+            modulus: Int::from_u64(p),
+            count: 1,
+            tried: None,
+        }
+    }
+    /// One more image, modulo `f.p`: whether the scaled lift changed. The
+    /// monic lift only while `rational` (it is read no more after).
+    fn extend(&mut self, monic: &[u64], scaled: &[u64], f: &Fp, rational: bool) -> bool {
+        let step = CrtStep::new(&self.modulus, f);
+        let changed = step.extend(&mut self.scaled, scaled, f);
+        if rational {
+            step.extend(&mut self.monic, monic, f);
+        }
+        self.modulus = step.next;
+        self.count += 1;
+        changed
+    }
 }
 
 /// The entry points on [`ZPoly`].
@@ -265,6 +456,69 @@ mod tests {
         assert!(gcd_mod_p(vec![], vec![0], &f).is_empty());
     }
 
+    /// `c·t^n + rest` with a long `c`.
+    fn long_leading(c: &Int, rest: &[i64]) -> ZPoly {
+        let mut v: Vec<Int> = rest.iter().map(|&x| Int::from(x)).collect();
+        v.push(c.clone());
+        ZPoly::new(v)
+    }
+
+    #[test]
+    fn rational_candidate_recovers_fractions() {
+        // t² + t/3 − 5/7 modulo a product of two table primes.
+        let (p, q) = (ntt_prime(0).p, ntt_prime(1).p);
+        let m = Int::from_u64(p).mul_i64(q as i64);
+        let residue = |n: i64, d: i64, primes: &[u64]| -> Int {
+            // n·d^(−1) modulo the primes' product, symmetric, by CRT.
+            let mut h = vec![Int::zero()];
+            let mut modulus = Int::one();
+            for &r in primes {
+                let f = Fp::new(r);
+                let x = f.mul(
+                    f.enter(n.rem_euclid(r as i64) as u64),
+                    f.inv(f.enter(d.rem_euclid(r as i64) as u64)),
+                );
+                let step = CrtStep::new(&modulus, &f);
+                step.extend(&mut h, &[f.leave(x)], &f);
+                modulus = step.next;
+            }
+            h.pop().expect("one value")
+        };
+        let monic = [residue(-5, 7, &[p, q]), residue(1, 3, &[p, q]), Int::one()];
+        assert_eq!(
+            rational_candidate(&monic, &m),
+            Some(ZPoly::from_i64s(&[-15, 7, 21]))
+        );
+        // Past B = 2^30 for one prime: no candidate; found with two (B = 2^61).
+        let long = |primes: &[u64]| [residue(4_000_000_007, 3_999_999_979, primes), Int::one()];
+        assert_eq!(rational_candidate(&long(&[p]), &Int::from_u64(p)), None);
+        assert_eq!(
+            rational_candidate(&long(&[p, q]), &m),
+            Some(ZPoly::from_i64s(&[4_000_000_007, 3_999_999_979]))
+        );
+    }
+
+    #[test]
+    fn a_small_gcd_of_long_leading_coefficients_takes_few_primes() {
+        // γ = gcd(lc a, lc b) = 2^20000 + 1 while G = t² + 3t − 7: the
+        // scaled lift alone needs ~330 primes, the rational one two.
+        let big = Int::one().shl(20_000) + Int::one();
+        let g = ZPoly::from_i64s(&[-7, 3, 1]);
+        let a = &g * &long_leading(&big, &[1, 5, 0]);
+        let b = &g * &long_leading(&big, &[-2, 0]);
+        let (got, used) = gcd_counted(&a, &b);
+        assert_eq!(got, g);
+        assert!(used <= 4, "{used} primes");
+        // And with a fractional monic form: G = 3t² − 2.
+        let g = ZPoly::from_i64s(&[-2, 0, 3]);
+        let (got, used) = gcd_counted(
+            &(&g * &long_leading(&big, &[4, 1])),
+            &(&g * &long_leading(&(&big + &big), &[-1, 0, 9])),
+        );
+        assert_eq!(got, g);
+        assert!(used <= 4, "{used} primes");
+    }
+
     #[test]
     fn crt_recovers_signed_values() {
         let vals = [
@@ -284,7 +538,9 @@ mod tests {
                     ))
                 }
                 Some((hv, m)) => {
-                    crt_extend(hv, m, &r, &f);
+                    let step = CrtStep::new(m, &f);
+                    step.extend(hv, &r, &f);
+                    *m = step.next;
                 }
             }
         }
@@ -406,6 +662,32 @@ mod gcd_tests {
         fn consecutive_polynomials_are_coprime(a in zpoly_deg(1, 12, 300), c in 1i64..1000) {
             // Any common divisor of a and a + c divides the constant c.
             prop_assert_eq!(a.gcd(&(&a + &z(&[c]))), ZPoly::one());
+        }
+
+        #[test]
+        fn common_factor_under_long_leading_coefficients(
+            a in zpoly_deg(1, 5, 60),
+            b in zpoly_deg(1, 5, 60),
+            g in zpoly_deg(1, 4, 200),
+            shift in 500u64..4000,
+        ) {
+            // Cofactors whose leading coefficients share a long factor L:
+            // γ is long, G may be short or long (both lifts race).
+            let long = Int::one().shl(shift) + Int::from(3);
+            let lead = |p: &ZPoly| {
+                let mut c = p.coeffs().to_vec();
+                c.push(long.clone());
+                ZPoly::new(c)
+            };
+            let (ca, cb) = (lead(&a), lead(&b));
+            let got = (&ca * &g).gcd(&(&cb * &g));
+            // Independent of the gcd under test: G divides it, it divides
+            // both, and the cofactors share no factor of positive degree
+            // (proven by one prime image of degree 0, or not at all).
+            prop_assert!(got.div_exact(&g.primitive_part()).is_some());
+            let (qa, qb) = ((&ca * &g).div_exact(&got), (&cb * &g).div_exact(&got));
+            prop_assert!(qa.is_some() && qb.is_some());
+            prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
         }
 
         #[test]
