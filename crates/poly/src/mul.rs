@@ -95,18 +95,33 @@ pub enum Method {
 /// long and the coefficients wide: 217 × 2000 bits 2.5 ms vs 9.3 ms,
 /// 64 × 300 bits 76 μs vs 102 μs, while 50 × 200 bits (43 vs 53 μs) and
 /// 20 × 2000 bits (259 vs 327 μs) stay with Kronecker; the rule below
-/// separates those points.
+/// separates those points. dashu (the default kernel) multiplies long
+/// integers by a number-theoretic transform, so Kronecker substitution
+/// wins again once the coefficients are wide, where the multimodular lift
+/// (quadratic in the number of primes) dominates: two factors of `n`
+/// coefficients of `b` bits each, best of three (Kronecker / multimodular,
+/// ms): n = 32: b = 10,000 7.5 / 6.1, 14,000 7.8 / 11.5, 20,000 15.6 /
+/// 22.5, 30,000 17.9 / 53.8; n = 64: 15.4 / 10.9, 16.3 / 20.8, 33.2 /
+/// 41.1, 38.9 / 96.6; n = 128: 34.1 / 20.9, 35.3 / 39.2, 84.9 / 77.3. So
+/// with dashu the multimodular product stops at 24,576
+/// (the factors' coefficient bits together).
 pub fn choose_method(la: usize, lb: usize, abits: u64, bbits: u64) -> Method {
     let short = la.min(lb) as u64;
     if short <= SCHOOLBOOK_MAX_LEN {
         return Method::Schoolbook;
     }
     let bits = abits + bbits;
-    if ccd_arith::BACKEND != "gmp" && short >= 24 && bits >= 256 && short * bits >= 32_768 {
+    let wide = ccd_arith::BACKEND == "dashu" && bits >= MULTIMODULAR_MAX_BITS;
+    if ccd_arith::BACKEND != "gmp" && !wide && short >= 24 && bits >= 256 && short * bits >= 32_768
+    {
         return Method::Multimodular;
     }
     Method::Kronecker
 }
+
+/// With the dashu kernel, factors whose coefficient bits add up to this
+/// many or more are multiplied by Kronecker substitution ([`choose_method`]).
+const MULTIMODULAR_MAX_BITS: u64 = 24_576;
 
 /// Factors whose shorter one has at most this many coefficients are
 /// multiplied schoolbook.
@@ -196,6 +211,16 @@ mod tests {
                 Method::Kronecker
             } else {
                 Method::Multimodular
+            }
+        );
+        // Wide coefficients: dashu's transform multiplication makes
+        // Kronecker substitution the cheaper one again.
+        assert_eq!(
+            choose_method(64, 64, 15_000, 15_000),
+            if ccd_arith::BACKEND == "num-bigint" {
+                Method::Multimodular
+            } else {
+                Method::Kronecker
             }
         );
     }
