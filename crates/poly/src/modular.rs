@@ -179,6 +179,7 @@ fn rational_until(gamma_bits: u64, image_words: u64) -> usize {
 /// 3, 4, 6, 8, 12, … (a power of two or three times one), so the attempts
 /// cost a constant factor over the last one.
 fn try_rational_at(count: usize) -> bool {
+    debug_assert!(count > 0, "images are counted from one");
     let odd = count >> count.trailing_zeros();
     odd == 1 || odd == 3
 }
@@ -346,23 +347,32 @@ fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
         let (images, first) = match &mut best {
             Some(images) if images.degree == d => (images, false),
             Some(images) if images.degree < d => continue,
-            _ => (best.insert(Images::new(d, &monic, &scaled, f.p)), true),
+            _ => {
+                let monic = (until > 0).then_some(&monic[..]);
+                (best.insert(Images::new(d, monic, &scaled, f.p)), true)
+            }
         };
         // The scaled lift is tried once an image no longer changes it.
-        if !first && !images.extend(&monic, &scaled, &f, images.count < until) {
-            let cand = ZPoly::new(images.scaled.clone()).primitive_part();
-            if divides(&cand) {
-                return (cand, used);
+        if !first {
+            let monic = (images.count < until).then_some(&monic[..]);
+            if !images.extend(monic, &scaled, &f) {
+                let cand = ZPoly::new(images.scaled.clone()).primitive_part();
+                if divides(&cand) {
+                    return (cand, used);
+                }
+                images.tried = Some(cand);
             }
         }
         if images.count <= until && try_rational_at(images.count) {
-            if let Some(cand) = rational_candidate(&images.monic, &images.modulus) {
-                if images.tried.as_ref() != Some(&cand) {
-                    if divides(&cand) {
-                        return (cand, used);
-                    }
-                    images.tried = Some(cand);
+            let cand = images
+                .monic
+                .as_ref()
+                .and_then(|m| rational_candidate(m, &images.modulus));
+            if let Some(cand) = cand.filter(|c| images.tried.as_ref() != Some(c)) {
+                if divides(&cand) {
+                    return (cand, used);
                 }
+                images.tried = Some(cand);
             }
         }
     }
@@ -376,37 +386,42 @@ struct Images {
     degree: usize,
     /// `γ·monic(gcd_p)`, symmetric residues modulo `modulus`.
     scaled: Vec<Int>,
-    /// `monic(gcd_p)`, symmetric residues modulo `modulus` (while rational
-    /// reconstruction is still tried, [`rational_until`]).
-    monic: Vec<Int>,
+    /// `monic(gcd_p)`, symmetric residues modulo `modulus`, while rational
+    /// reconstruction is still tried ([`rational_until`]); `None` after.
+    monic: Option<Vec<Int>>,
     /// The product of the primes of these images.
     modulus: Int,
     /// How many primes.
     count: usize,
-    /// The last rational candidate that failed trial division.
+    /// The last candidate that failed trial division.
     tried: Option<ZPoly>,
 }
 
 impl Images {
-    /// The first image, modulo `p` (plain residues).
-    fn new(degree: usize, monic: &[u64], scaled: &[u64], p: u64) -> Images {
-        let lift = |r: &[u64]| r.iter().map(|&x| symmetric(x, p)).collect();
+    /// The first image, modulo `p` (plain residues); `monic` only while
+    /// rational reconstruction is tried.
+    fn new(degree: usize, monic: Option<&[u64]>, scaled: &[u64], p: u64) -> Images {
+        let lift = |r: &[u64]| -> Vec<Int> { r.iter().map(|&x| symmetric(x, p)).collect() };
         Images {
             degree,
             scaled: lift(scaled),
-            monic: lift(monic),
+            monic: monic.map(lift),
             modulus: Int::from_u64(p),
             count: 1,
             tried: None,
         }
     }
     /// One more image, modulo `f.p`: whether the scaled lift changed. The
-    /// monic lift only while `rational` (it is read no more after).
-    fn extend(&mut self, monic: &[u64], scaled: &[u64], f: &Fp, rational: bool) -> bool {
+    /// monic lift goes on with `monic`, and is dropped without it (so it
+    /// can never be read behind the modulus).
+    fn extend(&mut self, monic: Option<&[u64]>, scaled: &[u64], f: &Fp) -> bool {
         let step = CrtStep::new(&self.modulus, f);
         let changed = step.extend(&mut self.scaled, scaled, f);
-        if rational {
-            step.extend(&mut self.monic, monic, f);
+        match (&mut self.monic, monic) {
+            (Some(lift), Some(r)) => {
+                step.extend(lift, r, f);
+            }
+            _ => self.monic = None,
         }
         self.modulus = step.next;
         self.count += 1;
@@ -489,7 +504,8 @@ mod tests {
             rational_candidate(&monic, &m),
             Some(ZPoly::from_i64s(&[-15, 7, 21]))
         );
-        // Past B = 2^30 for one prime: no candidate; found with two (B = 2^61).
+        // A fraction of 32-bit terms: past B = 2^30 (one prime), this residue
+        // happens to have no other candidate; found with two (B = 2^61).
         let long = |primes: &[u64]| [residue(4_000_000_007, 3_999_999_979, primes), Int::one()];
         assert_eq!(rational_candidate(&long(&[p]), &Int::from_u64(p)), None);
         assert_eq!(
@@ -501,7 +517,7 @@ mod tests {
     #[test]
     fn a_small_gcd_of_long_leading_coefficients_takes_few_primes() {
         // γ = gcd(lc a, lc b) = 2^20000 + 1 while G = t² + 3t − 7: the
-        // scaled lift alone needs ~330 primes, the rational one two.
+        // scaled lift alone needs ~330 primes, the rational one one.
         let big = Int::one().shl(20_000) + Int::one();
         let g = ZPoly::from_i64s(&[-7, 3, 1]);
         let a = &g * &long_leading(&big, &[1, 5, 0]);
@@ -517,6 +533,32 @@ mod tests {
         );
         assert_eq!(got, g);
         assert!(used <= 4, "{used} primes");
+    }
+
+    #[test]
+    fn a_wider_gcd_is_reconstructed_from_several_primes() {
+        // G with ~150-bit coefficients under a 25,000-bit γ: its monic form
+        // needs a modulus past 2^300 (five or six primes, attempts at 1, 2,
+        // 3, 4, 6), the scaled lift ~400 primes.
+        let c = |k: u64, v: i64| Int::one().shl(k) + Int::from(v);
+        let g = ZPoly::new(vec![c(150, -7), c(149, 3), c(151, 5)]);
+        let big = Int::one().shl(25_000) + Int::one();
+        let a = &g * &long_leading(&big, &[1, 5, 0]);
+        let b = &g * &long_leading(&big, &[-2, 0]);
+        let (got, used) = gcd_counted(&a, &b);
+        assert_eq!(got, g);
+        assert!((2..=8).contains(&used), "{used} primes");
+        // With the first table prime unlucky: t + 1 and t + 1 + p divide
+        // a and b, coprime over Z but equal modulo p, so the first image
+        // has degree 3 and the lifts restart at the second prime.
+        let p = Int::from_u64(ntt_prime(0).p);
+        let (a, b) = (
+            &a * &ZPoly::new(vec![Int::one(), Int::one()]),
+            &b * &ZPoly::new(vec![&p + &Int::one(), Int::one()]),
+        );
+        let (got, used) = gcd_counted(&a, &b);
+        assert_eq!(got, g);
+        assert!((3..=9).contains(&used), "{used} primes");
     }
 
     #[test]
@@ -672,7 +714,7 @@ mod gcd_tests {
             shift in 500u64..4000,
         ) {
             // Cofactors whose leading coefficients share a long factor L:
-            // γ is long, G may be short or long (both lifts race).
+            // γ is long: a short G comes from the rational lift at once.
             let long = Int::one().shl(shift) + Int::from(3);
             let lead = |p: &ZPoly| {
                 let mut c = p.coeffs().to_vec();
@@ -684,6 +726,7 @@ mod gcd_tests {
             // Independent of the gcd under test: G divides it, it divides
             // both, and the cofactors share no factor of positive degree
             // (proven by one prime image of degree 0, or not at all).
+            prop_assert_eq!(&got, &got.primitive_part());
             prop_assert!(got.div_exact(&g.primitive_part()).is_some());
             let (qa, qb) = ((&ca * &g).div_exact(&got), (&cb * &g).div_exact(&got));
             prop_assert!(qa.is_some() && qb.is_some());

@@ -214,15 +214,18 @@ mod tests {
             }
         );
         // Wide coefficients: dashu's transform multiplication makes
-        // Kronecker substitution the cheaper one again.
-        assert_eq!(
-            choose_method(64, 64, 15_000, 15_000),
-            if ccd_arith::BACKEND == "num-bigint" {
-                Method::Multimodular
-            } else {
-                Method::Kronecker
-            }
-        );
+        // Kronecker substitution the cheaper one again, from 24,576 bits.
+        let wide = |abits, bbits| choose_method(64, 64, abits, bbits);
+        let (narrow, at) = match ccd_arith::BACKEND {
+            "dashu" => (Method::Multimodular, Method::Kronecker),
+            "gmp" => (Method::Kronecker, Method::Kronecker),
+            _ => (Method::Multimodular, Method::Multimodular),
+        };
+        assert_eq!(wide(12_287, 12_288), narrow);
+        assert_eq!(wide(12_288, 12_288), at);
+        // And the product there is exact (24 × 24 coefficients of 12,288 bits).
+        let (a, b) = (v(24, 192), v(24, 192));
+        assert_eq!(mul_coeffs(&a, &b), mul_schoolbook(&a, &b));
     }
 
     #[test]
