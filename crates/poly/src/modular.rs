@@ -106,9 +106,9 @@ fn symmetric(r: u64, p: u64) -> Int {
 /// One step of incremental CRT, from the modulus `M` to `M·p`: the
 /// integer polynomials with `|h_i| ≤ M/2` known modulo `M`, extended by
 /// their images modulo `p`.
-struct CrtStep {
+struct CrtStep<'a> {
     /// `M`.
-    modulus: Int,
+    modulus: &'a Int,
     /// `M·p`.
     next: Int,
     /// `⌊M·p/2⌋`.
@@ -117,11 +117,11 @@ struct CrtStep {
     m_inv: u64,
 }
 
-impl CrtStep {
-    fn new(modulus: &Int, f: &Fp) -> CrtStep {
+impl<'a> CrtStep<'a> {
+    fn new(modulus: &'a Int, f: &Fp) -> CrtStep<'a> {
         let next = modulus.mul_i64(f.p as i64);
         CrtStep {
-            modulus: modulus.clone(),
+            modulus,
             half: next.shr_floor(1),
             next,
             m_inv: f.inv(f.enter(modulus.mod_u64(f.p))),
@@ -140,7 +140,7 @@ impl CrtStep {
                 continue;
             }
             changed = true;
-            hi.add_mul(&self.modulus, &symmetric(delta, f.p));
+            hi.add_mul(self.modulus, &symmetric(delta, f.p));
             if *hi > self.half {
                 *hi -= &self.next;
             } else if *hi < -&self.half {
@@ -159,8 +159,9 @@ const RATIONAL_MAX_BITS: u64 = 1 << 16;
 /// The most images rational reconstruction is tried from, for inputs whose
 /// images cost `image_words` word products a prime
 /// (`limbs·(deg a + deg b + 2)`) and `γ` of `gamma_bits` bits: a cost rule
-/// only (the candidate is proven by trial division either way). The scaled lift (2) needs
-/// `M > 2·‖H‖∞ ≥ 2·γ`, so at least `P = bits(γ)/62` primes, `P` images.
+/// only (the candidate is proven by trial division either way). The scaled
+/// lift (2) needs `M > 2·‖H‖∞ ≥ 2·γ`, so at least `P = bits(γ)/62`
+/// primes, `P` images.
 /// An attempt from `k` images costs about as much as `285·k²` image words
 /// (the Euclidean algorithm on `62·k`-bit numbers, [`wang`]: ~2,000
 /// instructions per `k²` against ~7 per image word, measured at 500 bits on
@@ -212,33 +213,26 @@ fn wang(x: &Int, m: &Int, b: &Int) -> Option<(Int, Int)> {
 /// `monic` (symmetric, modulo `modulus`), by rational reconstruction
 /// (module docs (3)): with `B = 2^⌊(bits M − 2)/2⌋` (so `2·B² < M`), each
 /// coefficient times the common denominator `D` found so far is a residue
-/// `x`, taken as it is when `|x| ≤ B`, else as the fraction `n/d` of
-/// [`wang`], with `D·d ≤ B`. `None` when a coefficient has no such
-/// fraction (more primes needed). A candidate only: the caller proves it
-/// by trial division.
+/// `x`, taken as the fraction `n/d` of [`wang`] (`d = 1` for an `x`
+/// within `B` of a multiple of `M`), with `D·d ≤ B`. `None` when a
+/// coefficient has no such fraction (more primes needed). A candidate
+/// only: the caller proves it by trial division.
 fn rational_candidate(monic: &[Int], modulus: &Int) -> Option<ZPoly> {
     let bound = Int::one().shl(modulus.bits().saturating_sub(2) / 2);
-    let half = modulus.shr_floor(1);
     let mut den = Int::one();
     let mut nums: Vec<Int> = Vec::with_capacity(monic.len());
     for c in monic {
         let scaled = c * &den;
         let x = &scaled - &(&scaled.div_floor(modulus) * modulus);
-        if x <= bound {
-            nums.push(x);
-            continue;
-        }
-        if x > half && &x - modulus >= -&bound {
-            nums.push(&x - modulus);
-            continue;
-        }
         let (n, d) = wang(&x, modulus, &bound)?;
-        den = &den * &d;
-        if den > bound {
-            return None;
-        }
-        for v in &mut nums {
-            *v = &*v * &d;
+        if !d.is_one() {
+            den = &den * &d;
+            if den > bound {
+                return None;
+            }
+            for v in &mut nums {
+                *v = &*v * &d;
+            }
         }
         nums.push(n);
     }
@@ -363,7 +357,8 @@ fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
                 images.tried = Some(cand);
             }
         }
-        if images.count <= until && try_rational_at(images.count) {
+        // While the monic lift is kept (up to `until` images).
+        if try_rational_at(images.count) {
             let cand = images
                 .monic
                 .as_ref()

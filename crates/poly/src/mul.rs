@@ -103,17 +103,20 @@ pub enum Method {
 /// ms): n = 32: b = 10,000 7.5 / 6.1, 14,000 7.8 / 11.5, 20,000 15.6 /
 /// 22.5, 30,000 17.9 / 53.8; n = 64: 15.4 / 10.9, 16.3 / 20.8, 33.2 /
 /// 41.1, 38.9 / 96.6; n = 128: 34.1 / 20.9, 35.3 / 39.2, 84.9 / 77.3. So
-/// with dashu the multimodular product stops at 24,576
-/// (the factors' coefficient bits together).
+/// with dashu the multimodular product stops at 24,576 bits (the factors'
+/// coefficient bits together).
 pub fn choose_method(la: usize, lb: usize, abits: u64, bbits: u64) -> Method {
     let short = la.min(lb) as u64;
     if short <= SCHOOLBOOK_MAX_LEN {
         return Method::Schoolbook;
     }
     let bits = abits + bbits;
-    let wide = ccd_arith::BACKEND == "dashu" && bits >= MULTIMODULAR_MAX_BITS;
-    if ccd_arith::BACKEND != "gmp" && !wide && short >= 24 && bits >= 256 && short * bits >= 32_768
-    {
+    let multimodular = match ccd_arith::BACKEND {
+        "gmp" => false,
+        "dashu" => bits < MULTIMODULAR_MAX_BITS,
+        _ => true,
+    };
+    if multimodular && short >= 24 && bits >= 256 && short * bits >= 32_768 {
         return Method::Multimodular;
     }
     Method::Kronecker

@@ -8,9 +8,9 @@
 //! needed 16,000 to 262,144 bits there (docs/table4.md, session 15), so the
 //! exact pass was cheaper. In the local basis the terms `T_k·y^k` are
 //! about as large as the values of `q` around `c`, and cancel only by
-//! about as many bits as the point is closer to a root than `c` is. The identity is exact
-//! (a Taylor shift), so no remainder is bounded: every enclosure is Horner's
-//! scheme in outward-rounded intervals.
+//! about as many bits as the point is closer to a root than `c` is. The
+//! identity is exact (a Taylor shift), so no remainder is bounded: every
+//! enclosure is Horner's scheme in outward-rounded intervals.
 
 use crate::model::ball_horner;
 use ccd_arith::{BigInterval, Dual, Dyadic, Int, Rat};

@@ -74,8 +74,9 @@ impl SignProbe {
 
     /// `read` on the re-centred model at a costly point `x`: the model kept,
     /// or, at the [`LOCAL_MISSES`]th costly point in a row it did not
-    /// decide, a new one next to `x = a/2^k` ([`Local::near`]). `None` for a cheap or non-dyadic point, when there is no model yet,
-    /// or when `read` does not decide. The lock is held only to read or
+    /// decide, a new one next to `x = a/2^k` ([`Local::near`]). `None` for
+    /// a cheap or non-dyadic point, when there is no model yet, or when
+    /// `read` does not decide. The lock is held only to read or
     /// replace the model, not while it is evaluated or built.
     fn recentred<T>(&self, x: &Rat, read: impl Fn(&Local) -> Option<T>) -> Option<T> {
         if !self.cost.costly(x) {
