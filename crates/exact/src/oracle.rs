@@ -389,11 +389,13 @@ impl Oracle for Exact<'_> {
         if q == Quantity::Sr0 && self.filtered {
             return Vanishing::Not(None);
         }
+        // `stats.sr0_formed` reads "formed, or proven zero".
         self.formed.set(true);
+        if self.coefficients().vanishes_identically(q) {
+            return Vanishing::Identically;
+        }
         let p = self.coefficients().polynomial(q);
-        if p.is_zero() {
-            Vanishing::Identically
-        } else if q == Quantity::Sr11 {
+        if q == Quantity::Sr11 {
             Vanishing::Not(Some(non_root_dyadic(p)))
         } else {
             Vanishing::Not(None)
@@ -465,7 +467,9 @@ impl Oracle for Exact<'_> {
         let Some(f) = &self.f else { return };
         stats.deg_f = f.char_poly().degree();
         stats.sr0_formed = self.formed.get();
-        stats.deg_sr0 = if self.formed.get() {
+        stats.deg_sr0 = if f.proven_zero(Quantity::Sr0) {
+            None
+        } else if self.formed.get() {
             f.polynomial(Quantity::Sr0).degree()
         } else {
             self.sr0_degree(f)

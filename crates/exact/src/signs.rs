@@ -57,6 +57,9 @@ pub(crate) struct Coefficients {
     /// Each closed form's constant term and nominal top coefficient
     /// ([`Coefficients::extremes`]), likewise.
     extremes: [OnceLock<(Int, Int)>; 5],
+    /// Whether each closed form vanishes identically
+    /// ([`Coefficients::vanishes_identically`]), decided once.
+    zero: [OnceLock<bool>; 5],
     /// `f_k · 2^(−shift)` in double-word balls (low → high), formed on
     /// first need.
     balls: OnceLock<[Vec<DwBall>; 5]>,
@@ -92,6 +95,7 @@ impl Coefficients {
             shift,
             polys: Default::default(),
             extremes: Default::default(),
+            zero: Default::default(),
             balls: OnceLock::new(),
             images: OnceLock::new(),
             last: RefCell::new(None),
@@ -116,6 +120,28 @@ impl Coefficients {
             }
             closed_form(&self.f.coeffs, q).expect("a closed form, not Var")
         })
+    }
+
+    /// Whether the closed form `q` is the zero polynomial, decided exactly
+    /// and once: for `sr0` first by a repeated factor of `f` in `λ` common
+    /// to every `t` ([`CharPoly::has_fixed_repeated_factor`], a few gcds of
+    /// quartics), else by forming `q` (at once when that is cheap: short
+    /// numbers, or `f` constant in `t`).
+    pub(crate) fn vanishes_identically(&self, q: Quantity) -> bool {
+        *self.zero[slot(q)].get_or_init(|| {
+            // Short numbers form q in i128 for less than the test, and a
+            // constant f's q is one closed form of integers.
+            let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+            let cheap = homogeneous_degree(q) * bits <= SMALL_BITS || self.f.degree() == 0;
+            (q == Quantity::Sr0 && !cheap && self.f.has_fixed_repeated_factor())
+                || self.polynomial(q).is_zero()
+        })
+    }
+
+    /// Whether [`Coefficients::vanishes_identically`] has found `q ≡ 0`
+    /// (without deciding it when it has not run).
+    pub(crate) fn proven_zero(&self, q: Quantity) -> bool {
+        self.zero[slot(q)].get() == Some(&true)
     }
 
     /// The constant term `q(0)` and the nominal top coefficient (of
@@ -694,6 +720,59 @@ mod tests {
             for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
                 prop_assert_eq!(f.polynomial(q), &closed_form(&coeffs, q).expect("a polynomial"));
             }
+        }
+
+        /// `sr0 ≡ 0` decided without forming `sr0` is the formed answer. The
+        /// pairs are built as `f = h(λ)^e·Σ_j t^j·g_j(λ)` (degree 4 in `λ`)
+        /// with `e = 2` (a repeated factor common to every `t`, so
+        /// `sr0 ≡ 0`: the claim the shortcut rests on, checked on the
+        /// formed `sr0`), `e = 1` (only a common simple factor) or, with
+        /// `plain`, without `h` (`F_j = (λ² + (j + 1)λ + 1)·g_j`); numbers scaled past the `i128` route's
+        /// 16 bits, so that the test itself runs. Where one `g_j` has no
+        /// repeated factor (and none shared with `h`), the test must find
+        /// `h` (it is complete there); and `g_0 = k²` (a repeated factor of
+        /// `F_0` alone, bodies touching at `t = 0`) must not hide it.
+        #[test]
+        fn sr0_vanishing_without_forming_it_is_the_formed_answer(
+            h in proptest::collection::vec(-9i64..10, 2),
+            g in proptest::collection::vec(proptest::collection::vec(-9i64..10, 3), 1..4),
+            e in 1u32..3, plain in any::<bool>(), touch in any::<bool>(), shift in 5u64..120,
+        ) {
+            let h = poly(&h);
+            prop_assume!(h.degree() == Some(1));
+            let mut g: Vec<ZPoly> = g.iter().map(|c| poly(c)).collect();
+            if touch {
+                // F_0 = h^e·k² with k = λ + 3: a root of F_0 alone.
+                g[0] = poly(&[9, 6, 1]).mul_int(&g[0].coeffs().first().cloned().unwrap_or_else(Int::one));
+            }
+            let factor = if plain { ZPoly::one() } else { h.pow(e) };
+            let lambda_deg = 4 - if plain { 0 } else { e as usize };
+            // F_j(λ), constant term first, padded to λ^4 by x^(4 − e − 2)·g_j.
+            let parts: Vec<ZPoly> = g.iter().enumerate().map(|(j, gj)| {
+                let top = if plain {
+                    poly(&[1, j as i64 + 1, 1])
+                } else {
+                    ZPoly::monomial(Int::from(j as i64 + 1), lambda_deg - 2)
+                };
+                &factor * &(&top * gj)
+            }).collect();
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+                // Coefficient of λ^(4 − k), a polynomial in t.
+                ZPoly::new(parts.iter().map(|p| p.coeff(4 - k).shl(shift)).collect())
+            });
+            let f = Coefficients::new(CharPoly { coeffs: coeffs.clone() });
+            let formed = closed_form(&coeffs, Quantity::Sr0).expect("a polynomial");
+            if !plain && e == 2 {
+                prop_assert!(formed.is_zero());
+                let clean = g.iter().any(|gj| {
+                    let p = &h * gj;
+                    gj.degree() == Some(2) && p.gcd(&p.derivative()).degree() == Some(0)
+                });
+                let decided = f.f.has_fixed_repeated_factor();
+                prop_assert!(decided || !clean, "h = {:?}, g = {:?}", h, g);
+            }
+            prop_assert_eq!(f.vanishes_identically(Quantity::Sr0), formed.is_zero());
+            prop_assert_eq!(f.proven_zero(Quantity::Sr0), formed.is_zero());
         }
 
         /// Each model agrees with the polynomial it stands for: exact signs

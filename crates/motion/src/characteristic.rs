@@ -28,7 +28,7 @@ use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
 use crate::matrices::{placed_quadric, static_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
-use ccd_poly::{SmallPoly, ZPoly};
+use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
@@ -155,6 +155,77 @@ impl CharPoly {
         Some(CharPoly {
             coeffs: f.map(ZPoly::constant),
         })
+    }
+
+    /// Whether a repeated factor in `λ` divides `f(λ; t)` at every `t`,
+    /// with `f = Σ_j t^j·F_j(λ)`: `h` is the product of the distinct
+    /// repeated factors of one `F_b` (the squarefree part of
+    /// `gcd(F_b, F_b′)`; `b` the part with the fewest of them modulo a word
+    /// prime, where the images' common gcd must have a repeated factor
+    /// first), and the answer is whether `h² | F_j` for every `j` (exact
+    /// division; `h` is primitive, so this is divisibility over `ℚ`).
+    /// Then `f` and `∂f/∂λ` have the common factor `h` at every `t`, so
+    /// `sr0`, their last subresultant, vanishes identically (Theorem 5.4's
+    /// branch). That is the usual reason for it: spheres (a double root
+    /// `λ = −1`), homothetic pairs, two translates of one body. A
+    /// sufficient test only (`false` does not mean `sr0 ≢ 0`), costing a
+    /// gcd of quartics and a few divisions instead of the degree-`6n`
+    /// closed form.
+    ///
+    /// ```
+    /// use ccd_motion::CharPoly;
+    /// use ccd_poly::ZPoly;
+    /// // (λ + 1)²·(λ² + t·λ + 2) = λ⁴ + (t + 2)λ³ + (2t + 3)λ² + (t + 4)λ + 2
+    /// let c = |v: &[i64]| ZPoly::from_i64s(v);
+    /// let f = CharPoly { coeffs: [c(&[1]), c(&[2, 1]), c(&[3, 2]), c(&[4, 1]), c(&[2])] };
+    /// assert!(f.has_fixed_repeated_factor());
+    /// // λ⁴ + 2λ² + (1 − t)·λ + 1: F_0 = (λ² + 1)², but not for every t.
+    /// let g = CharPoly { coeffs: [c(&[1]), c(&[]), c(&[2]), c(&[1, -1]), c(&[1])] };
+    /// assert!(!g.has_fixed_repeated_factor());
+    /// ```
+    pub fn has_fixed_repeated_factor(&self) -> bool {
+        // F_j, constant term first: coeffs[k] is the coefficient of λ^(4−k).
+        let part = |j: usize| {
+            ZPoly::new(
+                self.coeffs
+                    .iter()
+                    .rev()
+                    .map(|k| k.coeffs().get(j).cloned().unwrap_or_else(Int::zero))
+                    .collect(),
+            )
+        };
+        let parts: Vec<ZPoly> = (0..=self.degree()).map(part).collect();
+        // Modulo the word prime first (a filter whose "no" may be wrong, when
+        // the prime divides lc(h)): h̄² divides every image, so their gcd
+        // keeps degree 2 or more, and has a repeated factor.
+        let repeated = |r: &Residues| r.gcd(&r.derivative()).degree();
+        let mut images = Vec::with_capacity(parts.len());
+        let mut common = Residues::of(&ZPoly::zero());
+        for p in &parts {
+            images.push(Residues::of(p));
+            common = common.gcd(&images[images.len() - 1]);
+            if common.degree().is_none_or(|d| d < 2) {
+                return false;
+            }
+        }
+        if repeated(&common).is_none_or(|d| d == 0) {
+            return false;
+        }
+        // h from the part with the fewest repeated factors of its own (F_0
+        // has one more where the bodies touch at t = 0), exactly.
+        let base = (0..parts.len())
+            .min_by_key(|&j| repeated(&images[j]).unwrap_or(usize::MAX))
+            .unwrap_or(0);
+        let g = parts[base].gcd(&parts[base].derivative());
+        if g.degree().is_none_or(|d| d == 0) {
+            return false;
+        }
+        let h = g.squarefree_part();
+        let h2 = &h * &h;
+        parts
+            .iter()
+            .enumerate()
+            .all(|(j, p)| j == base || p.div_exact(&h2).is_some())
     }
 
     /// `deg_t f`: the largest degree of a coefficient.
@@ -646,6 +717,38 @@ mod tests {
             &crate::matrices::moving_quadric(&affine, &span).unwrap(),
         );
         assert_eq!(fast, slow);
+    }
+
+    /// An unlucky prime: `a` and `a + p` are one root modulo the word
+    /// prime `p`, so every image has the repeated factor `(λ − a)²` while
+    /// over `ℚ` the parts share the simple factors `λ − a`, `λ − a − p` only
+    /// (`sr0 ≢ 0`). `F_0` and `F_1` each have a repeated factor of their
+    /// own ((λ + 1)², (λ + 2)²), so the exact `h` (from `F_0`) is
+    /// `λ + 1`, and only the final division test says no.
+    #[test]
+    fn an_unlucky_prime_is_caught_by_the_exact_division() {
+        let p = Int::from(ccd_poly::Residues::modulus());
+        let a = Int::from(5);
+        let (r, s) = (
+            ZPoly::new(vec![-&a, Int::one()]),
+            ZPoly::new(vec![-(&a + &p), Int::one()]),
+        );
+        let shared = &r * &s;
+        let parts = [
+            &shared * &ZPoly::from_i64s(&[1, 2, 1]),
+            &shared * &ZPoly::from_i64s(&[4, 4, 1]),
+        ];
+        // Coefficient of λ^(4 − k), a polynomial in t.
+        let coeffs =
+            std::array::from_fn(|k| ZPoly::new(parts.iter().map(|f| f.coeff(4 - k)).collect()));
+        let f = CharPoly { coeffs };
+        assert!(!f.has_fixed_repeated_factor());
+        // With a lucky base (F_1 alone has no repeated factor over ℚ) the
+        // exact gcd already says no.
+        let clean = [parts[0].clone(), &shared * &ZPoly::from_i64s(&[3, 0, 1])];
+        let coeffs =
+            std::array::from_fn(|k| ZPoly::new(clean.iter().map(|f| f.coeff(4 - k)).collect()));
+        assert!(!CharPoly { coeffs }.has_fixed_repeated_factor());
     }
 
     proptest::proptest! {

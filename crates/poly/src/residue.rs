@@ -70,6 +70,11 @@ impl Residues {
         Residues::trimmed(vec![f.enter(k.mod_u64(f.p))])
     }
 
+    /// The field's prime `p` (the first table prime).
+    pub fn modulus() -> u64 {
+        FIELD.p
+    }
+
     /// The degree (`None` for zero).
     pub fn degree(&self) -> Option<usize> {
         self.0.len().checked_sub(1)
@@ -83,6 +88,23 @@ impl Residues {
         !self.0.is_empty()
             && !other.0.is_empty()
             && gcd_mod_p(self.0.clone(), other.0.clone(), &FIELD).len() == 1
+    }
+
+    /// The monic gcd over `F_p` (zero when both are zero). For images it
+    /// proves little by itself: a common factor `h` of `P, Q` over `ℚ`
+    /// shows in the images' gcd only when `p ∤ lc(h)`, so a gcd without
+    /// `h̄` rules `h` out only as a filter whose "no" may be wrong.
+    ///
+    /// ```
+    /// use ccd_poly::{Residues, ZPoly};
+    /// // (t − 1)²(t + 2) and (t − 1)²(t − 3): the gcd's image is (t − 1)².
+    /// let a = ZPoly::from_i64s(&[2, -3, 0, 1]);
+    /// let b = ZPoly::from_i64s(&[-3, 7, -5, 1]);
+    /// let g = Residues::of(&a).gcd(&Residues::of(&b));
+    /// assert_eq!(g, Residues::of(&ZPoly::from_i64s(&[1, -2, 1])));
+    /// ```
+    pub fn gcd(&self, other: &Residues) -> Residues {
+        Residues(gcd_mod_p(self.0.clone(), other.0.clone(), &FIELD))
     }
 
     /// The derivative: the image of `P′` (reduction commutes with it).
