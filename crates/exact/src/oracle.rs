@@ -389,7 +389,8 @@ impl Oracle for Exact<'_> {
         if q == Quantity::Sr0 && self.filtered {
             return Vanishing::Not(None);
         }
-        // `stats.sr0_formed` reads "formed, or proven zero".
+        // sr0 proven zero without forming it still leads to sr11, which
+        // `vanishes_identically` forms: `stats.sr0_formed` stays true.
         self.formed.set(true);
         if self.coefficients().vanishes_identically(q) {
             return Vanishing::Identically;
