@@ -429,7 +429,10 @@ impl Oracle for Exact<'_> {
         }
         self.formed.set(true);
         let poly = f.polynomial(q);
-        let roots = ccd_solver::isolate(poly, &zero, &one).ok()?;
+        let square = (q == Quantity::Sr11)
+            .then(|| f.triple_root_instants())
+            .flatten();
+        let roots = ccd_solver::isolate_with(poly, square.as_ref(), &zero, &one).ok()?;
         Some(Candidates {
             degree: poly.degree(),
             roots: Box::new(stream(roots, ExactRoot::Isolated)),

@@ -157,18 +157,18 @@ impl CharPoly {
         })
     }
 
-    /// Whether a repeated factor in `λ` divides `f(λ; t)` at every `t`,
-    /// with `f = Σ_j t^j·F_j(λ)`: `h` is the product of the distinct
+    /// A repeated factor in `λ` of `f(λ; t)` at every `t` (`h` with `h²`
+    /// dividing `f`), with `f = Σ_j t^j·F_j(λ)`: `h` is the product of the distinct
     /// repeated factors of one `F_b` (the squarefree part of
     /// `gcd(F_b, F_b′)`; `b` the part with the fewest of them modulo a word
     /// prime, where the images' common gcd must have a repeated factor
     /// first), and the answer is whether `h² | F_j` for every `j` (exact
-    /// division; `h` is primitive, so this is divisibility over `ℚ`).
-    /// Then `f` and `∂f/∂λ` have the common factor `h` at every `t`, so
+    /// division; `h` is primitive, so this is divisibility over `ℚ`);
+    /// `Some(h)` when so. Then `f` and `∂f/∂λ` have the common factor `h` at every `t`, so
     /// `sr0`, their last subresultant, vanishes identically (Theorem 5.4's
     /// branch). That is the usual reason for it: spheres (a double root
     /// `λ = −1`), homothetic pairs, two translates of one body. A
-    /// sufficient test only (`false` does not mean `sr0 ≢ 0`), costing a
+    /// sufficient test only (`None` does not mean `sr0 ≢ 0`), costing a
     /// gcd of quartics and a few divisions instead of the degree-`6n`
     /// closed form.
     ///
@@ -178,12 +178,12 @@ impl CharPoly {
     /// // (λ + 1)²·(λ² + t·λ + 2) = λ⁴ + (t + 2)λ³ + (2t + 3)λ² + (t + 4)λ + 2
     /// let c = |v: &[i64]| ZPoly::from_i64s(v);
     /// let f = CharPoly { coeffs: [c(&[1]), c(&[2, 1]), c(&[3, 2]), c(&[4, 1]), c(&[2])] };
-    /// assert!(f.has_fixed_repeated_factor());
+    /// assert_eq!(f.fixed_repeated_factor(), Some(c(&[1, 1])));
     /// // λ⁴ + 2λ² + (1 − t)·λ + 1: F_0 = (λ² + 1)², but not for every t.
     /// let g = CharPoly { coeffs: [c(&[1]), c(&[]), c(&[2]), c(&[1, -1]), c(&[1])] };
-    /// assert!(!g.has_fixed_repeated_factor());
+    /// assert_eq!(g.fixed_repeated_factor(), None);
     /// ```
-    pub fn has_fixed_repeated_factor(&self) -> bool {
+    pub fn fixed_repeated_factor(&self) -> Option<ZPoly> {
         // F_j, constant term first: coeffs[k] is the coefficient of λ^(4−k).
         let part = |j: usize| {
             ZPoly::new(
@@ -205,11 +205,11 @@ impl CharPoly {
             images.push(Residues::of(p));
             common = common.gcd(&images[images.len() - 1]);
             if common.degree().is_none_or(|d| d < 2) {
-                return false;
+                return None;
             }
         }
         if repeated(&common).is_none_or(|d| d == 0) {
-            return false;
+            return None;
         }
         // h from the part with the fewest repeated factors of its own (F_0
         // has one more where the bodies touch at t = 0), exactly.
@@ -218,7 +218,7 @@ impl CharPoly {
             .unwrap_or(0);
         let g = parts[base].gcd(&parts[base].derivative());
         if g.degree().is_none_or(|d| d == 0) {
-            return false;
+            return None;
         }
         let h = g.squarefree_part();
         let h2 = &h * &h;
@@ -226,6 +226,7 @@ impl CharPoly {
             .iter()
             .enumerate()
             .all(|(j, p)| j == base || p.div_exact(&h2).is_some())
+            .then_some(h)
     }
 
     /// `deg_t f`: the largest degree of a coefficient.
@@ -742,13 +743,13 @@ mod tests {
         let coeffs =
             std::array::from_fn(|k| ZPoly::new(parts.iter().map(|f| f.coeff(4 - k)).collect()));
         let f = CharPoly { coeffs };
-        assert!(!f.has_fixed_repeated_factor());
+        assert_eq!(f.fixed_repeated_factor(), None);
         // With a lucky base (F_1 alone has no repeated factor over ℚ) the
         // exact gcd already says no.
         let clean = [parts[0].clone(), &shared * &ZPoly::from_i64s(&[3, 0, 1])];
         let coeffs =
             std::array::from_fn(|k| ZPoly::new(clean.iter().map(|f| f.coeff(4 - k)).collect()));
-        assert!(!CharPoly { coeffs }.has_fixed_repeated_factor());
+        assert_eq!(CharPoly { coeffs }.fixed_repeated_factor(), None);
     }
 
     proptest::proptest! {

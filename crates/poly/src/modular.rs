@@ -40,7 +40,7 @@
 
 use crate::ntt::{reduce_all, to_limbs};
 use crate::prime::{ntt_prime, Fp};
-use crate::ZPoly;
+use crate::{Residues, ZPoly};
 use ccd_arith::Int;
 
 /// Drops trailing zeros.
@@ -438,6 +438,10 @@ impl ZPoly {
         if self.degree().is_none_or(|n| n == 0) || crate::modular::squarefree_by_prime(self) {
             return self.primitive_part();
         }
+        self.squarefree_by_gcd()
+    }
+    /// `pp(p / gcd(p, p′))`, for a `p` of degree at least 1.
+    fn squarefree_by_gcd(&self) -> ZPoly {
         let g = self.gcd(&self.derivative());
         if g.degree() == Some(0) {
             return self.primitive_part();
@@ -445,6 +449,62 @@ impl ZPoly {
         self.div_exact(&g)
             .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
             .primitive_part()
+    }
+    /// [`ZPoly::squarefree_part`] given a factor `square` whose square is
+    /// expected to divide `self` (a hint, proven here or dropped). After
+    /// the same one-prime test as `squarefree_part` (which settles a
+    /// squarefree `self` at once): `g` the squarefree part of `square`,
+    /// `self = g^k·q` with `k ≥ 2` as large as exact division allows, and
+    /// once one word prime proves `gcd(g, q) = 1`
+    /// ([`Residues::proves_coprime`]), `pp(g·q′)` with `q′` the squarefree
+    /// part of `q` (`q` itself when one word prime proves it so,
+    /// else by the gcd of `q` and `q′`, shorter than `self`'s). With `g`
+    /// squarefree and coprime to `q`, `g·q′` has exactly the distinct
+    /// irreducible factors of `self`, each once, so `pp(g·q′)` is the
+    /// polynomial `squarefree_part` returns (primitive with a positive
+    /// leading coefficient, hence unique). Otherwise the gcd of `self` and
+    /// `self′`, as there. It saves that gcd where the repeated factor is
+    /// known from elsewhere.
+    ///
+    /// ```
+    /// use ccd_poly::ZPoly;
+    /// // (t² + 1)³·(t − 2)·(t + 5), with the hint t² + 1.
+    /// let g = ZPoly::from_i64s(&[1, 0, 1]);
+    /// let p = &(&g.pow(3) * &ZPoly::from_i64s(&[-2, 1])) * &ZPoly::from_i64s(&[5, 1]);
+    /// assert_eq!(p.squarefree_part_given(&g), p.squarefree_part());
+    /// // A wrong hint is dropped: t − 2 divides p only once.
+    /// assert_eq!(p.squarefree_part_given(&ZPoly::from_i64s(&[-2, 1])), p.squarefree_part());
+    /// ```
+    pub fn squarefree_part_given(&self, square: &ZPoly) -> ZPoly {
+        // Squarefree already (the hint does not apply): as squarefree_part.
+        if self.degree().is_none_or(|n| n == 0) || squarefree_by_prime(self) {
+            return self.primitive_part();
+        }
+        let proven = || -> Option<ZPoly> {
+            if square.degree()? == 0 {
+                return None;
+            }
+            // Its own repeated factors (a touch there) removed first: a
+            // gcd of the short hint.
+            let g = square.squarefree_part();
+            let mut q = self.div_exact(&g)?.div_exact(&g)?;
+            while let Some(r) = q.div_exact(&g) {
+                q = r;
+            }
+            let squarefree = |p: &ZPoly| p.degree() == Some(0) || squarefree_by_prime(p);
+            let (image, kept) = Residues::image(&g);
+            if !(kept && image.proves_coprime(&Residues::of(&q))) {
+                return None;
+            }
+            // q's own repeated factors (a touch), by the gcd of the shorter q.
+            let q = if squarefree(&q) {
+                q
+            } else {
+                q.squarefree_by_gcd()
+            };
+            Some((&g * &q).primitive_part())
+        };
+        proven().unwrap_or_else(|| self.squarefree_by_gcd())
     }
 }
 
@@ -726,6 +786,30 @@ mod gcd_tests {
             let (qa, qb) = ((&ca * &g).div_exact(&got), (&cb * &g).div_exact(&got));
             prop_assert!(qa.is_some() && qb.is_some());
             prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
+        }
+
+        /// The hinted squarefree part is the plain one, whatever the hint:
+        /// `p = (a·b)^k·a^j·q·r²` with the hint `a·b·s` (`s = 1`: the
+        /// hint's square divides `p` for `k ≥ 2`; a factor `a` left over
+        /// with `j ≥ 1`, so that the hint is not coprime to the rest; `s`
+        /// random: the hint's square usually does not divide), `r²` a
+        /// repeated factor the hint does not know.
+        #[test]
+        fn hinted_squarefree_part_is_the_squarefree_part(
+            a in zpoly_deg(1, 2, 60),
+            b in zpoly_deg(0, 2, 60),
+            q in zpoly_deg(0, 4, 60),
+            r in zpoly_deg(0, 2, 30),
+            s in zpoly_deg(1, 2, 30),
+            k in 1u32..4,
+            j in 0u32..2,
+            exact in any::<bool>(),
+        ) {
+            let g = &a * &b;
+            let hint = if exact { g.clone() } else { &g * &s };
+            let p = &(&(&g.pow(k) * &a.pow(j)) * &q) * &r.pow(2);
+            prop_assume!(!p.is_zero() && !hint.is_zero());
+            prop_assert_eq!(p.squarefree_part_given(&hint), p.squarefree_part());
         }
 
         #[test]

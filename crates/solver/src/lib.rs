@@ -53,13 +53,28 @@ pub enum SolverError {
 /// a sign change); roots exactly at `lo`, `hi` or at a subdivision point
 /// come out as exact rationals.
 pub fn isolate(p: &ZPoly, lo: &Rat, hi: &Rat) -> Result<RootIter, SolverError> {
+    isolate_with(p, None, lo, hi)
+}
+
+/// [`isolate`], given a factor `square` whose square is expected to divide
+/// `p` (a hint for the squarefree part, [`ZPoly::squarefree_part_given`]:
+/// proven or dropped there, so the roots are the same either way).
+pub fn isolate_with(
+    p: &ZPoly,
+    square: Option<&ZPoly>,
+    lo: &Rat,
+    hi: &Rat,
+) -> Result<RootIter, SolverError> {
     if p.is_zero() {
         return Err(SolverError::IdenticallyZero);
     }
     if lo >= hi {
         return Err(SolverError::EmptyInterval);
     }
-    let sf = p.squarefree_part();
+    let sf = match square {
+        Some(g) => p.squarefree_part_given(g),
+        None => p.squarefree_part(),
+    };
     Ok(RootIter::new(SignProbe::shared(sf), lo, hi))
 }
 
