@@ -158,7 +158,11 @@ impl CharPoly {
     }
 
     /// A repeated factor in `λ` of `f(λ; t)` at every `t` (`h` with `h²`
-    /// dividing `f`), with `f = Σ_j t^j·F_j(λ)`: `h` is the product of the distinct
+    /// dividing `f`), with `f = Σ_j t^j·F_j(λ)`. Modulo a word prime the
+    /// parts' gcd must keep a repeated factor; when that factor's image is
+    /// linear with a short root (numerator and denominator up to `2^26`:
+    /// [`Residues::linear_candidate`]), `h` is that root's `d·λ − n`;
+    /// otherwise `h` is the product of the distinct
     /// repeated factors of one `F_b` (the squarefree part of
     /// `gcd(F_b, F_b′)`; `b` the part with the fewest of them modulo a word
     /// prime, where the images' common gcd must have a repeated factor
@@ -208,8 +212,18 @@ impl CharPoly {
                 return None;
             }
         }
-        if repeated(&common).is_none_or(|d| d == 0) {
+        let image = common.gcd(&common.derivative());
+        if image.degree().is_none_or(|d| d == 0) {
             return None;
+        }
+        // A short h read off the image (rational reconstruction: the usual
+        // double root, λ = −1 or a ratio of squared radii), proven by exact
+        // division; else h from an exact gcd.
+        if let Some(h) = image.linear_candidate() {
+            let h2 = &h * &h;
+            if parts.iter().all(|p| p.div_exact(&h2).is_some()) {
+                return Some(h);
+            }
         }
         // h from the part with the fewest repeated factors of its own (F_0
         // has one more where the bodies touch at t = 0), exactly.

@@ -107,6 +107,45 @@ impl Residues {
         Residues(gcd_mod_p(self.0.clone(), other.0.clone(), &FIELD))
     }
 
+    /// For an image of degree 1, `c·(t − r)`: the primitive `d·t − n` with
+    /// `n/d ≡ r (mod p)`, `|n|, d ≤ 2^26` (Wang's rational reconstruction in
+    /// machine integers, unique since `2·(2^26)² < p`), or `None` (also for
+    /// other degrees): a candidate only, for the caller to prove (a short
+    /// root seen modulo `p`). The bound is well below `√p`, so that the
+    /// residue of a long root passes for a short one only with odds of
+    /// about `2^53/p` (a wrong candidate costs the caller its proof; at
+    /// `2^30`, eleven scenes of the stability families paid it).
+    ///
+    /// ```
+    /// use ccd_poly::{Residues, ZPoly};
+    /// // 3t − 2 modulo p: back to 3t − 2 (from its root 2/3).
+    /// let g = Residues::of(&ZPoly::from_i64s(&[-2, 3]));
+    /// assert_eq!(g.linear_candidate(), Some(ZPoly::from_i64s(&[-2, 3])));
+    /// ```
+    pub fn linear_candidate(&self) -> Option<ZPoly> {
+        let f = &*FIELD;
+        let [c0, c1] = self.0[..] else {
+            return None;
+        };
+        // The root −c0/c1, in [0, p).
+        let root = f.leave(f.mul(f.neg(c0), f.inv(c1)));
+        const BOUND: i128 = 1 << 26;
+        // Extended Euclid on (p, root), stopped at the first remainder ≤ B.
+        let (mut r0, mut r1) = (i128::from(f.p), i128::from(root));
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 > BOUND {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        if t1 == 0 || t1.abs() > BOUND {
+            return None;
+        }
+        let (n, d) = if t1 < 0 { (-r1, -t1) } else { (r1, t1) };
+        let (n, d) = (i64::try_from(n).ok()?, i64::try_from(d).ok()?);
+        Some(ZPoly::from_i64s(&[-n, d]).primitive_part())
+    }
+
     /// The derivative: the image of `P′` (reduction commutes with it).
     pub fn derivative(&self) -> Residues {
         let f = &*FIELD;
