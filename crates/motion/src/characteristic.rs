@@ -168,9 +168,11 @@ impl CharPoly {
     /// prime, where the images' common gcd must have a repeated factor
     /// first), and the answer is whether `h² | F_j` for every `j` (exact
     /// division; `h` is primitive, so this is divisibility over `ℚ`);
-    /// `Some(h)` when so. Then `f` and `∂f/∂λ` have the common factor `h` at every `t`, so
-    /// `sr0`, their last subresultant, vanishes identically (Theorem 5.4's
-    /// branch). That is the usual reason for it: spheres (a double root
+    /// `Some(h)` when so. Then `sr0` vanishes identically (Theorem 5.4's
+    /// branch): it is a constant times the discriminant of the quartic
+    /// `f(·; t)`, which is zero wherever `h²` divides it — also where the
+    /// leading coefficient `c₄(t)` vanishes, since `Disc₄(0, a, b, c, d) =
+    /// a²·Disc₃(a, b, c, d)` and the cubic keeps `h²` (or `a = 0`). That is the usual reason for it: spheres (a double root
     /// `λ = −1`), homothetic pairs, two translates of one body. A
     /// sufficient test only (`None` does not mean `sr0 ≢ 0`), costing a
     /// gcd of quartics and a few divisions instead of the degree-`6n`
@@ -204,6 +206,10 @@ impl CharPoly {
         // keeps degree 2 or more, and has a repeated factor.
         let repeated = |r: &Residues| r.gcd(&r.derivative()).degree();
         let mut images = Vec::with_capacity(parts.len());
+        // (A zero image of F_0 leaves the running gcd zero and the test
+        // says no: completeness only, and for bodies F_0 = f(λ; 0) has the
+        // nonzero λ⁴ coefficient det A, so only a prime dividing all of F_0
+        // does that.)
         let mut common = Residues::of(&ZPoly::zero());
         for p in &parts {
             images.push(Residues::of(p));

@@ -452,10 +452,10 @@ impl ZPoly {
     }
     /// [`ZPoly::squarefree_part`] given a factor `square` whose square is
     /// expected to divide `self` (a hint, proven here or dropped). After
-    /// the same one-prime test as `squarefree_part` (which settles a
+    /// the same word-prime test as `squarefree_part` (which settles a
     /// squarefree `self` at once): `g` the squarefree part of `square`,
     /// `self = g^k·q` with `k ≥ 2` as large as exact division allows, and
-    /// once one word prime proves `gcd(g, q) = 1`
+    /// once one word prime that keeps `g`'s degree proves `gcd(g, q) = 1`
     /// ([`Residues::proves_coprime`]), `pp(g·q′)` with `q′` the squarefree
     /// part of `q` (`q` itself when one word prime proves it so,
     /// else by the gcd of `q` and `q′`, shorter than `self`'s). With `g`
@@ -663,6 +663,19 @@ mod gcd_tests {
         assert_eq!(ZPoly::zero().gcd(&z(&[4, 6])), z(&[2, 3]));
         assert_eq!(z(&[7]).gcd(&z(&[1, 1])), ZPoly::one());
         assert_eq!(z(&[7]).gcd(&ZPoly::zero()), ZPoly::one());
+    }
+
+    /// A hint whose leading coefficient the word prime divides: its image
+    /// drops the factor `p·t + 1`, so coprimality modulo `p` proves
+    /// nothing about it (found by review; the hinted result then kept
+    /// `(p·t + 1)²`).
+    #[test]
+    fn a_hint_with_the_prime_in_its_leading_coefficient_is_not_trusted() {
+        let p = Int::from_u64(crate::Residues::modulus());
+        let a = z(&[2, 1]);
+        let c = ZPoly::new(vec![Int::one(), p]);
+        let s = &a.pow(2) * &c.pow(3);
+        assert_eq!(s.squarefree_part_given(&(&a * &c)), s.squarefree_part());
     }
 
     #[test]

@@ -228,6 +228,32 @@ mod tests {
         ZPoly::from_i64s(c)
     }
 
+    /// Short roots come back exactly (the root 0, negative ones, the
+    /// bound `±2^26` itself), a long one (`1/2^30`) does not, and only
+    /// degree-1 images are read.
+    #[test]
+    fn linear_candidates_at_the_bounds() {
+        let b = 1i64 << 26;
+        for (n, d) in [
+            (0, 1),
+            (1, 1),
+            (-1, 1),
+            (-7, 3),
+            (b, 1),
+            (-b, b - 1),
+            (5, b),
+        ] {
+            let root = ZPoly::from_i64s(&[-n, d]).primitive_part();
+            // Any multiple of d·t − n has the same monic image.
+            let image = Residues::of(&root.mul_int(&Int::from(-12_345)));
+            assert_eq!(image.linear_candidate(), Some(root), "{n}/{d}");
+        }
+        let long = ZPoly::new(vec![Int::from(-1), Int::one().shl(30)]);
+        assert_eq!(Residues::of(&long).linear_candidate(), None);
+        assert_eq!(Residues::of(&poly(&[1, 0, 1])).linear_candidate(), None);
+        assert_eq!(Residues::of(&poly(&[3])).linear_candidate(), None);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
         /// The image of the derivative is the derivative of the image, and
