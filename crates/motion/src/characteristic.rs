@@ -206,15 +206,13 @@ impl CharPoly {
         // keeps degree 2 or more, and has a repeated factor.
         let repeated = |r: &Residues| r.gcd(&r.derivative()).degree();
         let mut images = Vec::with_capacity(parts.len());
-        // (A zero image of F_0 leaves the running gcd zero and the test
-        // says no: completeness only, and for bodies F_0 = f(λ; 0) has the
-        // nonzero λ⁴ coefficient det A, so only a prime dividing all of F_0
-        // does that.)
         let mut common = Residues::of(&ZPoly::zero());
         for p in &parts {
             images.push(Residues::of(p));
             common = common.gcd(&images[images.len() - 1]);
-            if common.degree().is_none_or(|d| d < 2) {
+            // (While every image so far is zero, the gcd is zero: no
+            // constraint yet.)
+            if common.degree().is_some_and(|d| d < 2) {
                 return None;
             }
         }
