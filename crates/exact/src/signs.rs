@@ -115,8 +115,7 @@ impl Coefficients {
     /// over `Z[t]`.
     pub(crate) fn polynomial(&self, q: Quantity) -> &ZPoly {
         self.polys[slot(q)].get_or_init(|| {
-            let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
-            if homogeneous_degree(q) * bits <= SMALL_BITS {
+            if self.short(q) {
                 let small = self.f.coeffs.each_ref().map(SmallPoly::lowered);
                 if let Some(p) = closed_form(&small, q).and_then(|p| p.to_zpoly()) {
                     return p;
@@ -124,6 +123,13 @@ impl Coefficients {
             }
             closed_form(&self.f.coeffs, q).expect("a closed form, not Var")
         })
+    }
+
+    /// Whether `q`'s numbers are short enough to form it in `i128` first
+    /// (`|q| < 2^(degree·bits + a few)`, [`homogeneous_degree`]).
+    fn short(&self, q: Quantity) -> bool {
+        let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+        homogeneous_degree(q) * bits <= SMALL_BITS
     }
 
     /// Whether the closed form `q` is the zero polynomial, decided exactly
@@ -135,8 +141,7 @@ impl Coefficients {
         *self.zero[slot(q)].get_or_init(|| {
             // Short numbers form q in i128 for less than the test, and a
             // constant f's q is one closed form of integers.
-            let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
-            let cheap = homogeneous_degree(q) * bits <= SMALL_BITS || self.f.degree() == 0;
+            let cheap = self.short(q) || self.f.degree() == 0;
             let fixed = || {
                 self.fixed
                     .get_or_init(|| self.f.fixed_repeated_factor())

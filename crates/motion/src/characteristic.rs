@@ -204,7 +204,8 @@ impl CharPoly {
         // Modulo the word prime first (a filter whose "no" may be wrong, when
         // the prime divides lc(h)): h̄² divides every image, so their gcd
         // keeps degree 2 or more, and has a repeated factor.
-        let repeated = |r: &Residues| r.gcd(&r.derivative()).degree();
+        // The repeated part gcd(r, r′) of an image.
+        let repeated = |r: &Residues| r.gcd(&r.derivative());
         let mut images = Vec::with_capacity(parts.len());
         let mut common = Residues::of(&ZPoly::zero());
         for p in &parts {
@@ -216,35 +217,34 @@ impl CharPoly {
                 return None;
             }
         }
-        let image = common.gcd(&common.derivative());
+        let image = repeated(&common);
         if image.degree().is_none_or(|d| d == 0) {
             return None;
         }
-        // A short h read off the image (rational reconstruction: the usual
-        // double root, λ = −1 or a ratio of squared radii), proven by exact
-        // division; else h from an exact gcd.
-        if let Some(h) = image.linear_candidate() {
+        // Proven when h² divides every part but `known` (one it divides).
+        let proven = |h: ZPoly, known: Option<usize>| {
             let h2 = &h * &h;
-            if parts.iter().all(|p| p.div_exact(&h2).is_some()) {
-                return Some(h);
-            }
+            parts
+                .iter()
+                .enumerate()
+                .all(|(j, p)| Some(j) == known || p.div_exact(&h2).is_some())
+                .then_some(h)
+        };
+        // A short h read off the image (rational reconstruction: the usual
+        // double root, λ = −1 or a ratio of squared radii); else h from an
+        // exact gcd of the part with the fewest repeated factors of its own
+        // (F_0 has one more where the bodies touch at t = 0).
+        if let Some(h) = image.linear_candidate().and_then(|h| proven(h, None)) {
+            return Some(h);
         }
-        // h from the part with the fewest repeated factors of its own (F_0
-        // has one more where the bodies touch at t = 0), exactly.
         let base = (0..parts.len())
-            .min_by_key(|&j| repeated(&images[j]).unwrap_or(usize::MAX))
+            .min_by_key(|&j| repeated(&images[j]).degree().unwrap_or(usize::MAX))
             .unwrap_or(0);
         let g = parts[base].gcd(&parts[base].derivative());
         if g.degree().is_none_or(|d| d == 0) {
             return None;
         }
-        let h = g.squarefree_part();
-        let h2 = &h * &h;
-        parts
-            .iter()
-            .enumerate()
-            .all(|(j, p)| j == base || p.div_exact(&h2).is_some())
-            .then_some(h)
+        proven(g.squarefree_part(), Some(base))
     }
 
     /// `deg_t f`: the largest degree of a coefficient.

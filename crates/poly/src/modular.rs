@@ -435,10 +435,7 @@ impl ZPoly {
     /// The squarefree part `pp(p / gcd(p, p'))`: the product of the distinct
     /// irreducible factors of `p`, primitive with positive leading coefficient.
     pub fn squarefree_part(&self) -> ZPoly {
-        if self.degree().is_none_or(|n| n == 0) || crate::modular::squarefree_by_prime(self) {
-            return self.primitive_part();
-        }
-        self.squarefree_by_gcd()
+        self.squarefree_part_given(None)
     }
     /// `pp(p / gcd(p, p′))`, for a `p` of degree at least 1.
     fn squarefree_by_gcd(&self) -> ZPoly {
@@ -450,15 +447,15 @@ impl ZPoly {
             .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
             .primitive_part()
     }
-    /// [`ZPoly::squarefree_part`] given a factor `square` whose square is
-    /// expected to divide `self` (a hint, proven here or dropped). After
-    /// the same word-prime test as `squarefree_part` (which settles a
-    /// squarefree `self` at once): `g` the squarefree part of `square`,
+    /// The squarefree part, given a factor `square` whose square is
+    /// expected to divide `self` (a hint, proven here or dropped; `None`:
+    /// [`ZPoly::squarefree_part`]). After a word-prime test (which settles
+    /// a squarefree `self` at once): `g` the squarefree part of `square`,
     /// `self = g^k·q` with `k ≥ 2` as large as exact division allows, and
     /// once one word prime that keeps `g`'s degree proves `gcd(g, q) = 1`
     /// ([`Residues::proves_coprime`]), `pp(g·q′)` with `q′` the squarefree
-    /// part of `q` (`q` itself when one word prime proves it so,
-    /// else by the gcd of `q` and `q′`, shorter than `self`'s). With `g`
+    /// part of `q` (by the gcd of `q` and `q′`, shorter than `self`'s, when
+    /// a word prime does not prove `q` squarefree). With `g`
     /// squarefree and coprime to `q`, `g·q′` has exactly the distinct
     /// irreducible factors of `self`, each once, so `pp(g·q′)` is the
     /// polynomial `squarefree_part` returns (primitive with a positive
@@ -471,16 +468,15 @@ impl ZPoly {
     /// // (t² + 1)³·(t − 2)·(t + 5), with the hint t² + 1.
     /// let g = ZPoly::from_i64s(&[1, 0, 1]);
     /// let p = &(&g.pow(3) * &ZPoly::from_i64s(&[-2, 1])) * &ZPoly::from_i64s(&[5, 1]);
-    /// assert_eq!(p.squarefree_part_given(&g), p.squarefree_part());
+    /// assert_eq!(p.squarefree_part_given(Some(&g)), p.squarefree_part());
     /// // A wrong hint is dropped: t − 2 divides p only once.
-    /// assert_eq!(p.squarefree_part_given(&ZPoly::from_i64s(&[-2, 1])), p.squarefree_part());
+    /// assert_eq!(p.squarefree_part_given(Some(&ZPoly::from_i64s(&[-2, 1]))), p.squarefree_part());
     /// ```
-    pub fn squarefree_part_given(&self, square: &ZPoly) -> ZPoly {
-        // Squarefree already (the hint does not apply): as squarefree_part.
+    pub fn squarefree_part_given(&self, square: Option<&ZPoly>) -> ZPoly {
         if self.degree().is_none_or(|n| n == 0) || squarefree_by_prime(self) {
             return self.primitive_part();
         }
-        let proven = || -> Option<ZPoly> {
+        let proven = |square: &ZPoly| -> Option<ZPoly> {
             if square.degree()? == 0 {
                 return None;
             }
@@ -491,20 +487,16 @@ impl ZPoly {
             while let Some(r) = q.div_exact(&g) {
                 q = r;
             }
-            let squarefree = |p: &ZPoly| p.degree() == Some(0) || squarefree_by_prime(p);
             let (image, kept) = Residues::image(&g);
             if !(kept && image.proves_coprime(&Residues::of(&q))) {
                 return None;
             }
-            // q's own repeated factors (a touch), by the gcd of the shorter q.
-            let q = if squarefree(&q) {
-                q
-            } else {
-                q.squarefree_by_gcd()
-            };
-            Some((&g * &q).primitive_part())
+            // q's own repeated factors (a touch), from the shorter q.
+            Some((&g * &q.squarefree_part()).primitive_part())
         };
-        proven().unwrap_or_else(|| self.squarefree_by_gcd())
+        square
+            .and_then(proven)
+            .unwrap_or_else(|| self.squarefree_by_gcd())
     }
 }
 
@@ -675,7 +667,10 @@ mod gcd_tests {
         let a = z(&[2, 1]);
         let c = ZPoly::new(vec![Int::one(), p]);
         let s = &a.pow(2) * &c.pow(3);
-        assert_eq!(s.squarefree_part_given(&(&a * &c)), s.squarefree_part());
+        assert_eq!(
+            s.squarefree_part_given(Some(&(&a * &c))),
+            s.squarefree_part()
+        );
     }
 
     #[test]
@@ -822,7 +817,7 @@ mod gcd_tests {
             let hint = if exact { g.clone() } else { &g * &s };
             let p = &(&(&g.pow(k) * &a.pow(j)) * &q) * &r.pow(2);
             prop_assume!(!p.is_zero() && !hint.is_zero());
-            prop_assert_eq!(p.squarefree_part_given(&hint), p.squarefree_part());
+            prop_assert_eq!(p.squarefree_part_given(Some(&hint)), p.squarefree_part());
         }
 
         #[test]

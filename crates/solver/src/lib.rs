@@ -71,10 +71,7 @@ pub fn isolate_with(
     if lo >= hi {
         return Err(SolverError::EmptyInterval);
     }
-    let sf = match square {
-        Some(g) => p.squarefree_part_given(g),
-        None => p.squarefree_part(),
-    };
+    let sf = p.squarefree_part_given(square);
     Ok(RootIter::new(SignProbe::shared(sf), lo, hi))
 }
 
