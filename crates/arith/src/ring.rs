@@ -47,6 +47,12 @@ pub trait RingOps: Clone + std::fmt::Debug {
             self.plus(&term)
         };
     }
+    /// `self · self`. The default is exactly `self.times(self)`; an exact
+    /// type may override it with a cheaper squaring (same value:
+    /// exactness).
+    fn squared(&self) -> Self {
+        self.times(self)
+    }
 }
 
 /// An exact commutative ring with exact division where it divides.
@@ -60,7 +66,7 @@ pub trait Ring: RingOps + PartialEq {
 /// and unary `−` operators, given its constants and its small division.
 #[macro_export]
 macro_rules! ring_ops_via_operators {
-    ($t:ty, zero: $zero:expr, one: $one:expr, from_i64: |$v:ident| $from:expr, is_zero: |$z:ident| $isz:expr, div_small: |$a:ident, $k:ident| $div:expr) => {
+    ($t:ty, zero: $zero:expr, one: $one:expr, from_i64: |$v:ident| $from:expr, is_zero: |$z:ident| $isz:expr, div_small: |$a:ident, $k:ident| $div:expr $(, squared: |$s:ident| $sq:expr)? $(, add_product: |$acc:ident, $x:ident, $y:ident, $neg:ident| $ap:expr)?) => {
         impl $crate::RingOps for $t {
             fn zero() -> Self {
                 $zero
@@ -91,11 +97,23 @@ macro_rules! ring_ops_via_operators {
                 let $a = self;
                 $div
             }
+            $(
+                fn squared(&self) -> Self {
+                    let $s = self;
+                    $sq
+                }
+            )?
+            $(
+                fn add_product(&mut self, $x: &Self, $y: &Self, $neg: bool) {
+                    let $acc = self;
+                    $ap
+                }
+            )?
         }
     };
 }
 
-ring_ops_via_operators!(Int, zero: Int::zero(), one: Int::one(), from_i64: |v| Int::from_i64(v), is_zero: |x| Int::is_zero(x), div_small: |a, k| a.div_exact(&Int::from_i64(k)));
+ring_ops_via_operators!(Int, zero: Int::zero(), one: Int::one(), from_i64: |v| Int::from_i64(v), is_zero: |x| Int::is_zero(x), div_small: |a, k| a.div_exact(&Int::from_i64(k)), squared: |x| x.pow(2));
 ring_ops_via_operators!(Rat, zero: Rat::zero(), one: Rat::one(), from_i64: |v| Rat::from(v), is_zero: |x| Rat::is_zero(x), div_small: |a, k| a / &Rat::from(k));
 ring_ops_via_operators!(f64, zero: 0.0, one: 1.0, from_i64: |v| v as f64, is_zero: |x| *x == 0.0, div_small: |a, k| a / k as f64);
 

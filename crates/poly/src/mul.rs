@@ -144,6 +144,89 @@ pub fn mul_coeffs(a: &[Int], b: &[Int]) -> Vec<Int> {
     }
 }
 
+/// `acc ← acc ± a·b` (coefficient vectors; `−` when `negate`): where
+/// [`choose_method`] picks the schoolbook product, accumulated in `acc`'s
+/// own coefficients (no product vector, no sum vector); otherwise the
+/// product by [`mul_coeffs`], added. Trailing zeros are the caller's.
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_poly::mul::add_mul_coeffs;
+/// let v = |c: &[i64]| c.iter().map(|&x| Int::from(x)).collect::<Vec<_>>();
+/// let mut acc = v(&[1]);
+/// add_mul_coeffs(&mut acc, &v(&[1, 1]), &v(&[-1, 1]), true); // 1 − (t² − 1)
+/// assert_eq!(acc, v(&[2, 0, -1]));
+/// ```
+pub fn add_mul_coeffs(acc: &mut Vec<Int>, a: &[Int], b: &[Int], negate: bool) {
+    if a.is_empty() || b.is_empty() {
+        return;
+    }
+    let len = a.len() + b.len() - 1;
+    if acc.len() < len {
+        acc.resize(len, Int::zero());
+    }
+    let abits = a.iter().map(Int::bits).max().unwrap_or(0);
+    let bbits = b.iter().map(Int::bits).max().unwrap_or(0);
+    if choose_method(a.len(), b.len(), abits, bbits) != Method::Schoolbook {
+        for (slot, c) in acc.iter_mut().zip(mul_coeffs(a, b)) {
+            *slot = if negate { &*slot - &c } else { &*slot + &c };
+        }
+        return;
+    }
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        let negated;
+        let x = if negate {
+            negated = -x;
+            &negated
+        } else {
+            x
+        };
+        for (slot, y) in acc[i..].iter_mut().zip(b) {
+            slot.add_mul(x, y);
+        }
+    }
+}
+
+/// `Σ_{i+j=k} a_i a_j`, the square of one coefficient vector: where
+/// [`choose_method`] picks the schoolbook product, each cross product
+/// `a_i·a_j` (`i < j`) once and doubled, then the diagonal `a_i²` (about
+/// half the products); otherwise [`mul_coeffs`].
+///
+/// ```
+/// use ccd_arith::Int;
+/// use ccd_poly::mul::{mul_schoolbook, sqr_coeffs};
+/// let v = |c: &[i64]| c.iter().map(|&x| Int::from(x)).collect::<Vec<_>>();
+/// assert_eq!(sqr_coeffs(&v(&[3, -1, 2])), mul_schoolbook(&v(&[3, -1, 2]), &v(&[3, -1, 2])));
+/// ```
+pub fn sqr_coeffs(a: &[Int]) -> Vec<Int> {
+    let bits = a.iter().map(Int::bits).max().unwrap_or(0);
+    if a.is_empty() || choose_method(a.len(), a.len(), bits, bits) != Method::Schoolbook {
+        return mul_coeffs(a, a);
+    }
+    let mut c = vec![Int::zero(); 2 * a.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        if x.is_zero() {
+            continue;
+        }
+        for (cij, y) in c[2 * i + 1..].iter_mut().zip(&a[i + 1..]) {
+            cij.add_mul(x, y);
+        }
+    }
+    for (k, ck) in c.iter_mut().enumerate() {
+        if !ck.is_zero() {
+            *ck = ck.shl(1);
+        }
+        if k % 2 == 0 {
+            let x = &a[k / 2];
+            ck.add_mul(x, x);
+        }
+    }
+    c
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -170,6 +253,19 @@ mod tests {
             prop_assert_eq!(&mul_kronecker(&a, &b), &expect);
             prop_assert_eq!(&mul_multimodular(&a, &b), &expect);
             prop_assert_eq!(&mul_coeffs(&a, &b), &expect);
+            prop_assert_eq!(sqr_coeffs(&a), mul_schoolbook(&a, &a));
+            for negate in [false, true] {
+                let mut acc = b.clone();
+                add_mul_coeffs(&mut acc, &a, &b, negate);
+                let product = mul_schoolbook(&a, &b);
+                let expect: Vec<Int> = (0..acc.len().max(product.len()))
+                    .map(|k| {
+                        let (x, y) = (b.get(k).cloned().unwrap_or_else(Int::zero), product.get(k).cloned().unwrap_or_else(Int::zero));
+                        if negate { &x - &y } else { &x + &y }
+                    })
+                    .collect();
+                prop_assert_eq!(acc, expect);
+            }
         }
 
         #[test]

@@ -233,7 +233,10 @@ macro_rules! forward_binops {
 pub(crate) use forward_binops;
 forward_binops!(ZPoly);
 
-ccd_arith::ring_ops_via_operators!(ZPoly, zero: ZPoly::zero(), one: ZPoly::one(), from_i64: |v| ZPoly::constant(Int::from(v)), is_zero: |x| ZPoly::is_zero(x), div_small: |a, k| a.div_exact_int(&Int::from(k)));
+ccd_arith::ring_ops_via_operators!(ZPoly, zero: ZPoly::zero(), one: ZPoly::one(), from_i64: |v| ZPoly::constant(Int::from(v)), is_zero: |x| ZPoly::is_zero(x), div_small: |a, k| a.div_exact_int(&Int::from(k)), squared: |x| ZPoly::new(crate::mul::sqr_coeffs(&x.c)), add_product: |acc, x, y, negate| {
+    crate::mul::add_mul_coeffs(&mut acc.c, &x.c, &y.c, negate);
+    trim(&mut acc.c);
+});
 
 impl Ring for ZPoly {
     /// The exact quotient in `Z[t]`; panics if `o` does not divide `self`.
