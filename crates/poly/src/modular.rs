@@ -284,6 +284,12 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
 
 /// [`gcd`] and the number of primes whose images it took.
 fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
+    gcd_given(a, b, false)
+}
+
+/// [`gcd_counted`], told whether `a` is known to be primitive (its content,
+/// a gcd of long coefficients, is then not taken again).
+fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
     let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
         let g = if a.is_zero() {
             b.primitive_part()
@@ -320,7 +326,12 @@ fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
             return (ZPoly::one(), used);
         }
         let (pa, pb, gamma, until) = primitive.get_or_insert_with(|| {
-            let (pa, pb) = (a.primitive_part(), b.primitive_part());
+            let pa = if a_primitive {
+                a.clone()
+            } else {
+                a.primitive_part()
+            };
+            let pb = b.primitive_part();
             let gamma = pa
                 .leading()
                 .expect("nonzero")
@@ -439,13 +450,16 @@ impl ZPoly {
     }
     /// `pp(p / gcd(p, p′))`, for a `p` of degree at least 1.
     fn squarefree_by_gcd(&self) -> ZPoly {
-        let g = self.gcd(&self.derivative());
+        // `p/g` of a primitive `p` by a primitive `g` is primitive (Gauss's
+        // lemma), with a positive leading coefficient: `p`'s content is
+        // taken once, for the gcd and the result.
+        let p = self.primitive_part();
+        let (g, _) = gcd_given(&p, &p.derivative(), true);
         if g.degree() == Some(0) {
-            return self.primitive_part();
+            return p;
         }
-        self.div_exact(&g)
+        p.div_exact(&g)
             .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
-            .primitive_part()
     }
     /// The squarefree part, given a factor `square` whose square is
     /// expected to divide `self` (a hint, proven here or dropped; `None`:
@@ -679,6 +693,9 @@ mod gcd_tests {
         let p = &(&a.pow(3) * &b.pow(2)) * &c;
         assert_eq!(p.squarefree_part(), &(&a * &b) * &c);
         assert_eq!(p.mul_int(&Int::from(-6)).squarefree_part(), &(&a * &b) * &c);
+        // A long content: taken once, the quotient by the gcd primitive.
+        let long = -Int::from(3).pow(150);
+        assert_eq!(p.mul_int(&long).squarefree_part(), &(&a * &b) * &c);
         assert_eq!(z(&[5]).squarefree_part(), ZPoly::one());
         assert_eq!(ZPoly::zero().squarefree_part(), ZPoly::zero());
     }
