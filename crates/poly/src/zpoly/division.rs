@@ -46,6 +46,63 @@ pub(crate) fn content_of<'a>(c: impl IntoIterator<Item = &'a Int, IntoIter: Clon
     g
 }
 
+/// The content `g` of the entries ([`content_of`]) and the entries divided
+/// by it, in one pass; `None` when `g` is `0` or `1` (nothing to divide).
+/// Each entry's remainder by the running gcd comes with its quotient, kept
+/// while the gcd stays; an entry read before the gcd last shrank is
+/// corrected by the shrink factor (`q·(g_then/g)`), one not divided (its
+/// remainder shrank the gcd) is divided at the end. Where the content is
+/// long (a set-up's common factors) this halves the long divisions of
+/// [`content_of`] followed by a division of every entry.
+pub(crate) fn content_and_quotients(c: &[&Int]) -> Option<(Int, Vec<Int>)> {
+    if c.iter().all(|x| x.to_i128().is_some()) {
+        let g = content_of(c.iter().copied());
+        return (!g.is_zero() && !g.is_one()).then(|| {
+            let q = c.iter().map(|x| x.div_exact(&g)).collect();
+            (g, q)
+        });
+    }
+    let smallest = c.iter().filter(|x| !x.is_zero()).min_by_key(|x| x.bits())?;
+    // The running gcd's values; an entry's quotient is by `versions[v]`,
+    // `v = usize::MAX` for an entry not divided.
+    let mut versions = vec![smallest.abs()];
+    let mut quotients: Vec<(Int, usize)> = Vec::with_capacity(c.len());
+    for x in c {
+        let (v, g) = (versions.len() - 1, &versions[versions.len() - 1]);
+        if g.is_one() {
+            return None;
+        }
+        if x.is_zero() {
+            quotients.push((Int::zero(), v));
+            continue;
+        }
+        let (q, r) = x.div_rem_trunc(g);
+        if r.is_zero() {
+            quotients.push((q, v));
+        } else {
+            let next = g.gcd(&r);
+            versions.push(next);
+            quotients.push((Int::zero(), usize::MAX));
+        }
+    }
+    let last = versions.len() - 1;
+    let g = versions[last].clone();
+    if g.is_one() {
+        return None;
+    }
+    let shrink: Vec<Int> = versions[..last].iter().map(|h| h.div_exact(&g)).collect();
+    let q = quotients
+        .into_iter()
+        .zip(c)
+        .map(|((q, v), x)| match v {
+            usize::MAX => x.div_exact(&g),
+            v if v == last => q,
+            v => &q * &shrink[v],
+        })
+        .collect();
+    Some((g, q))
+}
+
 impl ZPoly {
     /// `p / c` coefficientwise; the caller guarantees `c ≠ 0` divides every
     /// coefficient (checked in debug builds).
@@ -160,14 +217,45 @@ impl ZPoly {
     pub fn common_content(polys: &[ZPoly]) -> Int {
         content_of(polys.iter().flat_map(|p| p.c.iter()))
     }
+    /// The polynomials divided by their common content `g`
+    /// ([`ZPoly::common_content`]), and `g`; `None` when `g` is `0` or `1`.
+    /// One pass: each coefficient is divided once, not once for the gcd
+    /// and again for the quotient.
+    ///
+    /// ```
+    /// use ccd_poly::ZPoly;
+    /// let (p, q) = (ZPoly::from_i64s(&[12, 18]), ZPoly::from_i64s(&[0, 8]));
+    /// let (g, parts) = ZPoly::divide_common_content(&[p, q]).expect("content 2");
+    /// assert_eq!(g, ccd_arith::Int::from(2));
+    /// assert_eq!(parts, vec![ZPoly::from_i64s(&[6, 9]), ZPoly::from_i64s(&[0, 4])]);
+    /// assert_eq!(ZPoly::divide_common_content(&[ZPoly::from_i64s(&[2, 3])]), None);
+    /// ```
+    pub fn divide_common_content(polys: &[ZPoly]) -> Option<(Int, Vec<ZPoly>)> {
+        let entries: Vec<&Int> = polys.iter().flat_map(|p| p.c.iter()).collect();
+        let (g, mut q) = content_and_quotients(&entries)?;
+        let mut parts = Vec::with_capacity(polys.len());
+        for p in polys.iter().rev() {
+            let c = q.split_off(q.len() - p.c.len());
+            parts.push(ZPoly { c });
+        }
+        parts.reverse();
+        Some((g, parts))
+    }
     /// `p / (±content)`, with positive leading coefficient; zero stays zero.
     pub fn primitive_part(&self) -> ZPoly {
         let Some(lc) = self.leading() else {
             return ZPoly::zero();
         };
-        let g = self.content();
-        let g = if lc.is_negative() { -g } else { g };
-        self.div_exact_int(&g)
+        let sign = |g: Int| if lc.is_negative() { -g } else { g };
+        // Machine-size coefficients: the gcd in `u128`, then one division.
+        if self.c.iter().all(|x| x.bits() <= 127) {
+            return self.div_exact_int(&sign(self.content()));
+        }
+        match ZPoly::divide_common_content(std::slice::from_ref(self)) {
+            Some((_, mut parts)) if !lc.is_negative() => parts.pop().expect("one part"),
+            Some((_, mut parts)) => -&parts.pop().expect("one part"),
+            None => self.div_exact_int(&sign(Int::one())),
+        }
     }
 }
 
@@ -236,6 +324,36 @@ mod tests {
             prop_assert_eq!(scaled.content(), &p.content() * &c.abs());
             prop_assert_eq!(scaled.primitive_part(), pp.clone());
             prop_assert_eq!(pp.mul_int(&p.content()), if p.leading().is_some_and(|l| l.is_negative()) { -p.clone() } else { p.clone() });
+        }
+
+        /// One pass of content and quotients: a long common factor `g`
+        /// (up to ~600 bits), the first polynomial with an extra factor
+        /// `h` (so the running gcd can shrink after quotients were taken),
+        /// short and long coefficients.
+        #[test]
+        fn common_content_divided_in_one_pass(
+            ps in prop::collection::vec(zpoly(6, 300), 1..4),
+            c in 1i64..1000,
+            e in 0u32..200,
+            h in 1i64..1000,
+        ) {
+            let g = &Int::from(c) * &Int::from(7).pow(e);
+            let scaled: Vec<ZPoly> = ps
+                .iter()
+                .enumerate()
+                .map(|(i, p)| p.mul_int(&if i == 0 { &g * &Int::from(h) } else { g.clone() }))
+                .collect();
+            let want = ZPoly::common_content(&scaled);
+            match ZPoly::divide_common_content(&scaled) {
+                None => prop_assert!(want.is_zero() || want.is_one()),
+                Some((got, parts)) => {
+                    prop_assert_eq!(&got, &want);
+                    prop_assert_eq!(parts.len(), scaled.len());
+                    for (q, p) in parts.iter().zip(&scaled) {
+                        prop_assert_eq!(&q.mul_int(&got), p);
+                    }
+                }
+            }
         }
 
         /// The machine-integer content agrees with big-integer gcds, on
