@@ -26,15 +26,28 @@ pub fn mul_schoolbook(a: &[Int], b: &[Int]) -> Vec<Int> {
         return Vec::new();
     }
     let mut c = vec![Int::zero(); a.len() + b.len() - 1];
+    accumulate_schoolbook(&mut c, a, b, false);
+    c
+}
+
+/// `acc ← acc ± a·b` by the schoolbook method, in `acc`'s own slots
+/// (`acc` has at least `la + lb − 1` of them).
+fn accumulate_schoolbook(acc: &mut [Int], a: &[Int], b: &[Int], negate: bool) {
     for (i, x) in a.iter().enumerate() {
         if x.is_zero() {
             continue;
         }
-        for (cij, y) in c[i..].iter_mut().zip(b) {
-            cij.add_mul(x, y);
+        let negated;
+        let x = if negate {
+            negated = -x;
+            &negated
+        } else {
+            x
+        };
+        for (slot, y) in acc[i..].iter_mut().zip(b) {
+            slot.add_mul(x, y);
         }
     }
-    c
 }
 
 /// `Σ_{i+j=k} a_i b_j` by Kronecker substitution: one product of the
@@ -173,27 +186,13 @@ pub fn add_mul_coeffs(acc: &mut Vec<Int>, a: &[Int], b: &[Int], negate: bool) {
         }
         return;
     }
-    for (i, x) in a.iter().enumerate() {
-        if x.is_zero() {
-            continue;
-        }
-        let negated;
-        let x = if negate {
-            negated = -x;
-            &negated
-        } else {
-            x
-        };
-        for (slot, y) in acc[i..].iter_mut().zip(b) {
-            slot.add_mul(x, y);
-        }
-    }
+    accumulate_schoolbook(acc, a, b, negate);
 }
 
 /// `Σ_{i+j=k} a_i a_j`, the square of one coefficient vector: where
 /// [`choose_method`] picks the schoolbook product, each cross product
 /// `a_i·a_j` (`i < j`) once and doubled, then the diagonal `a_i²` (about
-/// half the products); otherwise [`mul_coeffs`].
+/// half the products); otherwise the method [`mul_coeffs`] would use.
 ///
 /// ```
 /// use ccd_arith::Int;
@@ -202,9 +201,14 @@ pub fn add_mul_coeffs(acc: &mut Vec<Int>, a: &[Int], b: &[Int], negate: bool) {
 /// assert_eq!(sqr_coeffs(&v(&[3, -1, 2])), mul_schoolbook(&v(&[3, -1, 2]), &v(&[3, -1, 2])));
 /// ```
 pub fn sqr_coeffs(a: &[Int]) -> Vec<Int> {
+    if a.is_empty() {
+        return Vec::new();
+    }
     let bits = a.iter().map(Int::bits).max().unwrap_or(0);
-    if a.is_empty() || choose_method(a.len(), a.len(), bits, bits) != Method::Schoolbook {
-        return mul_coeffs(a, a);
+    match choose_method(a.len(), a.len(), bits, bits) {
+        Method::Schoolbook => {}
+        Method::Kronecker => return mul_kronecker(a, a),
+        Method::Multimodular => return mul_multimodular(a, a),
     }
     let mut c = vec![Int::zero(); 2 * a.len() - 1];
     for (i, x) in a.iter().enumerate() {

@@ -231,6 +231,16 @@ impl ZPoly {
     /// assert_eq!(ZPoly::divide_common_content(&[ZPoly::from_i64s(&[2, 3])]), None);
     /// ```
     pub fn divide_common_content(polys: &[ZPoly]) -> Option<(Int, Vec<ZPoly>)> {
+        // Machine-size coefficients: the gcd in `u128`, then one division.
+        if polys.iter().all(|p| p.c.iter().all(|x| x.bits() <= 127)) {
+            let g = ZPoly::common_content(polys);
+            return (!g.is_zero() && !g.is_one()).then(|| {
+                (
+                    g.clone(),
+                    polys.iter().map(|p| p.div_exact_int(&g)).collect(),
+                )
+            });
+        }
         let entries: Vec<&Int> = polys.iter().flat_map(|p| p.c.iter()).collect();
         let (g, mut q) = content_and_quotients(&entries)?;
         let mut parts = Vec::with_capacity(polys.len());
