@@ -29,7 +29,7 @@ use crate::kinds::{Body, Motion, Quat, Vec3};
 use crate::matrices::{placed_quadric, static_quadric, PlacedQuadric};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
-use ccd_quadric::{characteristic, placed_characteristic, Mat4};
+use ccd_quadric::{characteristic, congruence, placed_characteristic, Mat4};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
 /// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
@@ -95,7 +95,20 @@ impl CharPoly {
                 _ => None,
             };
             small.map(Quartic::Small).unwrap_or_else(|| {
-                let (qa, qb) = (a.quadric(), b.quadric());
+                // `A = NᵀDN`: column j of both inverse placements divided by
+                // their common content `s_j` gives `S⁻¹AS⁻¹`, `S⁻¹BS⁻¹`
+                // (`S = diag(s)`), so `f` divided by `det(S)²`, which the
+                // normalisation's content removal takes out anyway.
+                let (qa, qb) = if a.bits().max(b.bits()) > SMALL_BODY_BITS {
+                    let (na, nb) =
+                        without_row_contents(transposed(a.inverse()), transposed(b.inverse()));
+                    (
+                        congruence(&transposed(na), &a.diagonal),
+                        congruence(&transposed(nb), &b.diagonal),
+                    )
+                } else {
+                    (a.quadric(), b.quadric())
+                };
                 worth_small(sizes(&[&qa, &qb]), 4)
                     .then(|| exact(characteristic(&lowered(&qa), &lowered(&qb))))
                     .flatten()
@@ -325,7 +338,8 @@ fn worth_small(entries: impl Iterator<Item = (usize, u64)> + Clone, factors: usi
 /// homogeneous row `(0, 0, 0, w_A | 0, 0, 0, w_B)` of two polynomial
 /// motions holds their common denominator: 336 of the 4,001 content bits
 /// of `bench-perturbed-affine-deg2-d0100`'s `f`. Only on the [`Int`]
-/// route: the `i128` one gains nothing from shorter numbers.
+/// route: the `i128` one gains nothing from shorter numbers. The quadric
+/// route applies it to the columns of the inverse placements.
 fn without_row_contents(mut pa: Mat4<ZPoly>, mut pb: Mat4<ZPoly>) -> (Mat4<ZPoly>, Mat4<ZPoly>) {
     for (ra, rb) in pa.iter_mut().zip(pb.iter_mut()) {
         let r = ZPoly::common_content(&[&ra[..], &rb[..]].concat());
@@ -337,6 +351,18 @@ fn without_row_contents(mut pa: Mat4<ZPoly>, mut pb: Mat4<ZPoly>) -> (Mat4<ZPoly
         }
     }
     (pa, pb)
+}
+
+/// `mᵀ`.
+fn transposed(m: Mat4<ZPoly>) -> Mat4<ZPoly> {
+    let mut t = m;
+    for i in 0..4 {
+        for j in i + 1..4 {
+            let (upper, lower) = t.split_at_mut(j);
+            std::mem::swap(&mut upper[i][j], &mut lower[0][i]);
+        }
+    }
+    t
 }
 
 /// `f` unless a [`SmallPoly`] step overflowed.
@@ -799,9 +825,11 @@ mod tests {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
         /// Dividing the rows of `[M_A | M_B]` by their contents divides the
         /// Plücker quartic by the contents' squares, nothing else (linear
-        /// entries, rows multiplied by long factors, some zero entries).
+        /// entries, rows multiplied by long factors, some zero entries);
+        /// so does dividing the columns of two inverse placements `N` for
+        /// the quartic of the quadrics `NᵀDN`.
         #[test]
-        fn row_contents_only_scale_the_plucker_quartic(
+        fn line_contents_only_scale_the_quartics(
             entries in proptest::collection::vec(-3i64..4, 64),
             diagonal in proptest::collection::vec(1i64..5, 8),
             rows in proptest::collection::vec((1i64..40, 0u32..30), 4),
@@ -827,8 +855,19 @@ mod tests {
                 let row: Vec<ZPoly> = ma[i].iter().chain(&mb[i]).cloned().collect();
                 &s * &ZPoly::common_content(&row).pow(2)
             });
-            let (xa, xb) = without_row_contents(ma, mb);
+            let (xa, xb) = without_row_contents(ma.clone(), mb.clone());
             let lean = placed_characteristic(&xa, &d(0), &xb, &d(1));
+            proptest::prop_assert_eq!(lean.map(|c| c.mul_int(&scale)), raw);
+            // The same matrices as inverse placements `N` with long column
+            // factors: `det(λNᵀD_AN + ...)` scales by the columns' contents
+            // squared.
+            let (na, nb) = (transposed(ma), transposed(mb));
+            let quartic = |na: &Mat4<ZPoly>, nb: &Mat4<ZPoly>| {
+                characteristic(&congruence(na, &d(0)), &congruence(nb, &d(1)))
+            };
+            let raw = quartic(&na, &nb);
+            let (ta, tb) = without_row_contents(transposed(na), transposed(nb));
+            let lean = quartic(&transposed(ta), &transposed(tb));
             proptest::prop_assert_eq!(lean.map(|c| c.mul_int(&scale)), raw);
         }
 
