@@ -871,6 +871,64 @@ mod tests {
             proptest::prop_assert_eq!(lean.map(|c| c.mul_int(&scale)), raw);
         }
 
+        /// Placements of long decimals (past 80 bits, past `i128`): the
+        /// lean routes (rows of `[M_A | M_B]` or columns of the inverse
+        /// placements divided by their contents) give the `f` of the
+        /// quadrics themselves, normalised by factorisation — for a rigid
+        /// body beside a static one (the quadric route) and for two affine
+        /// bodies (the Plücker route).
+        #[test]
+        fn long_placements_take_the_lean_routes(
+            digits in proptest::collection::vec(-9i64..10, 40),
+            scale in 25u32..40,
+        ) {
+            use crate::kinds::{Bezier, Motion};
+            let ten = Int::from(10).pow(scale);
+            // (10^s·(k + 7) + digit) / (2·10^s): near (k + 7)/2, long.
+            let long = |k: usize| {
+                Rat::new(&(&ten * &Int::from(k as i64 % 5 + 7)) + &Int::from(digits[k % 40]), &ten * &Int::from(2))
+                    .expect("nonzero")
+            };
+            let radii = |o: usize| std::array::from_fn(|i| long(o + i));
+            let quat = |o: usize| -> [Rat; 4] { std::array::from_fn(|i| long(o + i)) };
+            let vec3 = |o: usize| -> [Rat; 3] { std::array::from_fn(|i| &long(o + i) * &Rat::from(3 * (i as i64) - 2)) };
+            let span = [Rat::zero(), Rat::one()];
+            let rigid = Body {
+                radii: radii(0),
+                motion: Motion::Rigid {
+                    orientation: Bezier { points: vec![quat(3), quat(7)], weights: None },
+                    center: Bezier { points: vec![vec3(11), vec3(14)], weights: None },
+                },
+            };
+            let still = Body { radii: radii(17), motion: Motion::Static { center: vec3(20), orientation: quat(23) } };
+            let affine = |o: usize| Body {
+                radii: radii(o),
+                motion: Motion::Affine {
+                    matrix: Bezier {
+                        points: (0..2)
+                            .map(|p| std::array::from_fn(|r| std::array::from_fn(|c| {
+                                let x = long(o + 4 * r + c + p);
+                                if r == c { &x * &Rat::from(4) } else { x }
+                            })))
+                            .collect(),
+                        weights: None,
+                    },
+                },
+            };
+            for (a, b) in [(rigid, still), (affine(2), affine(9))] {
+                let (Ok(pa), Ok(pb)) = (
+                    crate::matrices::placed_quadric(&a, &span),
+                    crate::matrices::placed_quadric(&b, &span),
+                ) else {
+                    continue;
+                };
+                proptest::prop_assert!(pa.bits().max(pb.bits()) > SMALL_BODY_BITS);
+                let slow = CharPoly::new(&pa.quadric(), &pb.quadric());
+                let fast = CharPoly::from_placed(&pa, &pb);
+                proptest::prop_assert!(same_up_to_constant_scalings(&fast, &slow), "{fast:?} vs {slow:?}");
+            }
+        }
+
         /// The Plücker route (affine bodies) against the adjugate quadrics
         /// with factors found by factorisation: the same normalised `f`.
         #[test]
