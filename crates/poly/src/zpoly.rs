@@ -283,6 +283,21 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
+        /// The in-place `add_product` and `squared` are the plain ring
+        /// operations as polynomials (no trailing zeros: a product that
+        /// cancels the accumulator leaves the zero polynomial).
+        #[test]
+        fn in_place_products_are_the_ring_operations(a in zpoly(8, 300), b in zpoly(8, 300), c in zpoly(8, 300), negate in any::<bool>()) {
+            for acc in [c.clone(), &a * &b, -&(&a * &b)] {
+                let mut got = acc.clone();
+                got.add_product(&a, &b, negate);
+                let want = if negate { acc.minus(&a.times(&b)) } else { acc.plus(&a.times(&b)) };
+                prop_assert_eq!(&got, &want);
+                prop_assert!(got.coeffs().last().is_none_or(|x| !x.is_zero()));
+            }
+            prop_assert_eq!(a.squared(), &a * &a);
+        }
+
 
         #[test]
         fn ring_identities(a in zpoly(12, 300), b in zpoly(12, 300), c in zpoly(12, 300)) {
