@@ -53,15 +53,9 @@ pub(crate) fn content_of<'a>(c: impl IntoIterator<Item = &'a Int, IntoIter: Clon
 /// corrected by the shrink factor (`q·(g_then/g)`), one not divided (its
 /// remainder shrank the gcd) is divided at the end. Where the content is
 /// long (a set-up's common factors) this halves the long divisions of
-/// [`content_of`] followed by a division of every entry.
-pub(crate) fn content_and_quotients(c: &[&Int]) -> Option<(Int, Vec<Int>)> {
-    if c.iter().all(|x| x.to_i128().is_some()) {
-        let g = content_of(c.iter().copied());
-        return (!g.is_zero() && !g.is_one()).then(|| {
-            let q = c.iter().map(|x| x.div_exact(&g)).collect();
-            (g, q)
-        });
-    }
+/// [`content_of`] followed by a division of every entry. For long entries
+/// ([`ZPoly::divide_common_content`] takes machine-size ones itself).
+fn content_and_quotients(c: &[&Int]) -> Option<(Int, Vec<Int>)> {
     let smallest = c.iter().filter(|x| !x.is_zero()).min_by_key(|x| x.bits())?;
     // The running gcd's values; an entry's quotient is by `versions[v]`,
     // `v = usize::MAX` for an entry not divided.
@@ -257,7 +251,8 @@ impl ZPoly {
             return ZPoly::zero();
         };
         let sign = |g: Int| if lc.is_negative() { -g } else { g };
-        // Machine-size coefficients: the gcd in `u128`, then one division.
+        // Machine-size coefficients: one division by `±content` (no
+        // separate negation pass, no part vector: this is the hot case).
         if self.c.iter().all(|x| x.bits() <= 127) {
             return self.div_exact_int(&sign(self.content()));
         }
