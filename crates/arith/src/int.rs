@@ -118,6 +118,42 @@ impl Int {
     pub fn is_divisible_by(&self, d: &Int) -> bool {
         k::is_zero(&k::div_rem_trunc(&self.0, &d.0).1)
     }
+    /// How often `p ≥ 2` divides `self ≠ 0`, counted up to `cap` (the
+    /// least of the two): by the largest power `p^m` in a word, one word
+    /// remainder and one exact division by a word per `m` factors
+    /// (`p = 2`: the trailing zeros).
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// let x = Int::from(10).pow(37) * Int::from(7);
+    /// assert_eq!(x.valuation(10, u64::MAX), 37);
+    /// assert_eq!(x.valuation(10, 20), 20);
+    /// assert_eq!(x.valuation(3, u64::MAX), 0);
+    /// ```
+    pub fn valuation(&self, p: u32, cap: u64) -> u64 {
+        debug_assert!(p >= 2 && !self.is_zero());
+        if p == 2 {
+            return self.trailing_zeros().unwrap_or(0).min(cap);
+        }
+        let p = u64::from(p);
+        let (mut word, mut m) = (p, 1);
+        while let Some(next) = word.checked_mul(p) {
+            (word, m) = (next, m + 1);
+        }
+        let (mut v, mut rest) = (0, self.clone());
+        while v < cap {
+            let mut r = rest.mod_u64(word);
+            if r != 0 {
+                while r % p == 0 && v < cap {
+                    (r, v) = (r / p, v + 1);
+                }
+                break;
+            }
+            rest = rest.div_exact(&Int::from_u64(word));
+            v += m;
+        }
+        v.min(cap)
+    }
     /// Non-negative greatest common divisor (`gcd(0, 0) = 0`).
     #[inline]
     pub fn gcd(&self, other: &Int) -> Int {
@@ -537,6 +573,28 @@ mod tests {
     }
 
     proptest! {
+        /// `valuation` against dividing one factor at a time, on `p^e·c`
+        /// (long powers, `c` sometimes a multiple of `p` itself), with and
+        /// without a cap.
+        #[test]
+        fn valuation_matches_repeated_division(
+            p in 2u32..120,
+            e in 0u32..300,
+            c in -1_000_000i64..1_000_000,
+            cap in 0u64..400,
+        ) {
+            prop_assume!(c != 0);
+            let pi = Int::from(i64::from(p));
+            let x = pi.pow(e) * Int::from(c);
+            let mut naive = (0u64, x.clone());
+            while naive.1.is_divisible_by(&pi) {
+                naive = (naive.0 + 1, naive.1.div_exact(&pi));
+            }
+            prop_assert!(naive.0 >= u64::from(e));
+            prop_assert_eq!(x.valuation(p, u64::MAX), naive.0);
+            prop_assert_eq!(x.valuation(p, cap), naive.0.min(cap));
+        }
+
         /// Every kernel operation against `i128` arithmetic, on `i64` operands.
         #[test]
         fn kernel_matches_i128(a in any::<i64>(), b in any::<i64>(), s in 0u64..64, p in 1u64..u64::MAX) {
