@@ -48,9 +48,15 @@ const VIEW_BITS: i64 = 100;
 /// need of them, shared by the models of all quantities.
 pub(crate) struct Coefficients {
     f: CharPoly,
-    /// `f_k · 2^(−shift)` in `f64`.
+    /// `f_k · 2^(tilt·(4 − k) − shift)` in `f64` (`k` high → low).
     views: [ScaledPoly; 5],
     shift: i64,
+    /// The rescaling `λ ↦ 2^tilt·λ` of the views ([`balancing`]) before
+    /// the common shift: with one shift for all, the shortest `f_k` would
+    /// sit its spread from the longest below `2^100`, and products of four
+    /// below `f64`'s range (`bench-perturbed-rigid-deg2-d0030`: 1,825 to
+    /// 3,476 bits). A power of two changes no rounding elsewhere.
+    tilt: i64,
     /// The closed forms as polynomials, each formed on first need
     /// (indexed by [`slot`]).
     polys: [OnceLock<ZPoly>; 5],
@@ -63,8 +69,8 @@ pub(crate) struct Coefficients {
     /// A repeated factor of `f` in `λ` common to every `t`
     /// ([`CharPoly::fixed_repeated_factor`]), looked for once.
     fixed: OnceLock<Option<ZPoly>>,
-    /// `f_k · 2^(−shift)` in double-word balls (low → high), formed on
-    /// first need.
+    /// The views' values in double-word balls (each low → high in `u`),
+    /// formed on first need.
     balls: OnceLock<[Vec<DwBall>; 5]>,
     /// The `f_k` modulo the word prime of [`Residues`], formed on first
     /// need (every quantity's image is a closed form of these).
@@ -90,12 +96,22 @@ struct BoxValues {
 
 impl Coefficients {
     pub(crate) fn new(f: CharPoly) -> Coefficients {
-        let bits = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0) as i64;
+        let sizes = f
+            .coeffs
+            .each_ref()
+            .map(|c| (!c.is_zero()).then(|| c.max_bits() as i64));
+        let (tilt, _) = balancing(|k| sizes[k].map(|b| b as f64));
+        let bits = (0..5)
+            .filter_map(|k| sizes[k].map(|b| b + tilt * (4 - k as i64)))
+            .max()
+            .unwrap_or(0);
         let shift = (bits - VIEW_BITS).max(0);
+        let view_shift = |k: usize| shift - tilt * (4 - k as i64);
         Coefficients {
-            views: std::array::from_fn(|k| ScaledPoly::with_shift(&f.coeffs[k], shift)),
+            views: std::array::from_fn(|k| ScaledPoly::with_shift(&f.coeffs[k], view_shift(k))),
             f,
             shift,
+            tilt,
             polys: Default::default(),
             extremes: Default::default(),
             zero: Default::default(),
@@ -210,6 +226,18 @@ impl Coefficients {
         }
     }
 
+    /// The shift of view `k` (high → low): `f_k·2^(−view_shift(k))`.
+    fn view_shift(&self, k: usize) -> i64 {
+        self.shift - self.tilt * (4 - k as i64)
+    }
+
+    /// `−log2 σ` for `q`: the closed form of the views is `σ·q` with `σ =
+    /// 2^(tilt·i − shift·w)`, `q` being homogeneous of degree `w` and
+    /// isobaric of weight `i` ([`isobaric_weight`]) in the `f_k`.
+    fn sigma_exp(&self, q: Quantity) -> i64 {
+        self.shift * weight(q) - self.tilt * isobaric_weight(q) as i64
+    }
+
     /// `f(λ; u)`.
     pub(crate) fn char_poly(&self) -> &CharPoly {
         &self.f
@@ -270,7 +298,7 @@ fn weight(q: Quantity) -> i64 {
 }
 
 /// The closed form `q` of `f`'s coefficients as a [`SignModel`], with
-/// `σ = 2^(−shift·w)`.
+/// `σ = 2^(tilt·i − shift·w)` (`Coefficients::sigma_exp`).
 #[derive(Clone)]
 pub struct ClosedForm {
     f: Rc<Coefficients>,
@@ -377,10 +405,9 @@ impl ClosedForm {
             }
         }
         let x = DwBall::exactly(m)?;
-        let balls = self
-            .f
-            .balls
-            .get_or_init(|| std::array::from_fn(|k| ball_view(&self.f.f.coeffs[k], self.f.shift)));
+        let balls = self.f.balls.get_or_init(|| {
+            std::array::from_fn(|k| ball_view(&self.f.f.coeffs[k], self.f.view_shift(k)))
+        });
         let jets: [Dual<DwBall>; 5] = std::array::from_fn(|k| ball_horner(&balls[k], &x));
         *self.f.last_ball.borrow_mut() = Some((m.clone(), jets));
         Some(jets)
@@ -426,7 +453,7 @@ impl ClosedForm {
     /// The exponent `scale` of the jets at a dyadic point `a/2^j`:
     /// `σ·(q(m), q′(m)) = Q(F + εG)·2^(−scale)` ([`SignModel::exact_jet_at`]).
     fn jet_scale(&self, j: i64) -> i64 {
-        (j * self.f.f.degree() as i64 + self.f.shift) * weight(self.q)
+        j * self.f.f.degree() as i64 * weight(self.q) + self.f.sigma_exp(self.q)
     }
 
     /// The closed form over double-word jets balanced into `f64`'s range
@@ -790,7 +817,7 @@ mod tests {
                 prop_assert!(!kept || image.degree() == exact.degree());
                 prop_assert_eq!(model.exact(), exact);
                 prop_assert_eq!(model.sign_at(&x), exact.sign_at(&x));
-                let sigma = |v: Rat| v.mul_pow2(-f.shift * weight(q));
+                let sigma = |v: Rat| v.mul_pow2(-f.sigma_exp(q));
                 let (v, d) = model.value_and_slope_at(&m);
                 let holds = |iv: Interval, r: Rat| {
                     Rat::from_f64_exact(iv.lo).expect("finite") <= r
