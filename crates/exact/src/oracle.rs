@@ -354,14 +354,25 @@ impl Oracle for Exact<'_> {
         unreachable!("exact signs decide every sample")
     }
 
-    /// Forms `f(λ; u)`, refusing a closed form above [`MAX_EXACT_BITS`].
+    /// Forms `f(λ; u)`, refusing a closed form above [`MAX_EXACT_BITS`]
+    /// (after [`CharPoly::without_constant_scalings`] when it is up to
+    /// twice that long).
     fn prepare(&mut self) -> Result<(), CcdError> {
-        let f = self
+        let mut f = self
             .early
             .borrow_mut()
             .take()
             .unwrap_or_else(|| self.char_poly());
-        let size = exact_bits(&f);
+        let mut size = exact_bits(&f);
+        if size > MAX_EXACT_BITS && size <= 2 * MAX_EXACT_BITS {
+            // Long constant factors left in f (a positive rescaling of λ
+            // and f: the sample read before stays valid, as below). Only
+            // near the bound: the contents' gcds grow with f, and past
+            // twice the bound they did not bring it back (rigid-288
+            // perturbed at the 1000th digit: 150M bits → 81M, 6 s more).
+            f = f.without_constant_scalings();
+            size = exact_bits(&f);
+        }
         if size > MAX_EXACT_BITS {
             return Err(CcdError::Effort {
                 limit: "exact size",

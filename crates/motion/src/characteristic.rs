@@ -476,21 +476,38 @@ pub fn squarefree_factors(p: &ZPoly) -> Vec<(ZPoly, usize)> {
 
 /// Splits a list of polynomials into pairwise coprime nonconstant factors
 /// whose products generate the same multiplicative structure.
-fn coprime_basis(mut items: Vec<ZPoly>) -> Vec<ZPoly> {
-    let nonconstant = |p: &ZPoly| p.degree().unwrap_or(0) > 0;
-    items.retain(nonconstant);
+fn coprime_basis(items: Vec<ZPoly>) -> Vec<ZPoly> {
+    refine_coprime(
+        items,
+        |p| p.degree().unwrap_or(0) > 0,
+        ZPoly::gcd,
+        |p, g| p.div_exact(g).expect("gcd divides"),
+    )
+}
+
+/// Factor refinement: `items` split into pairwise coprime `proper` elements
+/// (not constants, for polynomials; not units, for integers) whose products
+/// generate the same multiplicative structure: two elements with a proper
+/// gcd `g` are replaced by `g` and their cofactors until no two have one.
+fn refine_coprime<T>(
+    mut items: Vec<T>,
+    proper: impl Fn(&T) -> bool,
+    gcd: impl Fn(&T, &T) -> T,
+    quotient: impl Fn(&T, &T) -> T,
+) -> Vec<T> {
+    items.retain(&proper);
     let mut i = 0;
     while i < items.len() {
         let mut j = i + 1;
         let mut split = false;
         while j < items.len() {
-            let g = items[i].gcd(&items[j]);
-            if nonconstant(&g) {
-                let a = items[i].div_exact(&g).expect("gcd divides");
-                let b = items[j].div_exact(&g).expect("gcd divides");
+            let g = gcd(&items[i], &items[j]);
+            if proper(&g) {
+                let a = quotient(&items[i], &g);
+                let b = quotient(&items[j], &g);
                 items.swap_remove(j);
                 items.swap_remove(i);
-                items.extend([g, a, b].into_iter().filter(nonconstant));
+                items.extend([g, a, b].into_iter().filter(&proper));
                 split = true;
                 break;
             }
@@ -697,28 +714,42 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
     // Low → high for indexing by the power of λ.
     let mut c = f;
     c.reverse();
+    let divisors: [u32; 5] = std::array::from_fn(|k| small_prime_divisors(&c[k]));
+    let any = divisors.iter().fold(0, |a, d| a | d);
+    let factors = SMALL_PRIMES
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| any & (1 << i) != 0)
+        .map(|(i, p)| {
+            let v: [Option<usize>; 5] = std::array::from_fn(|k| {
+                let divides = divisors[k] & (1 << i) != 0;
+                (!c[k].is_zero()).then(|| {
+                    if divides {
+                        multiplicity_of_prime(&c[k], p)
+                    } else {
+                        0
+                    }
+                })
+            });
+            (Int::from(i64::from(p)), v)
+        })
+        .collect();
+    c = rescale(c, factors);
+    c.reverse();
+    c
+}
+
+/// `c_k·Π π^(α_π + β_π·k)` (`c` low → high in λ) for factors `π > 1`
+/// with multiplicities `v_k` in the `c_k` (`None` for `c_k = 0`): the
+/// exponents of [`best_exponents`] for each, then one division and one
+/// product per `c_k`.
+fn rescale(mut c: [ZPoly; 5], factors: Vec<(Int, [Option<usize>; 5])>) -> [ZPoly; 5] {
     let sizes: [usize; 5] = std::array::from_fn(|k| c[k].max_bits() as usize);
     let (mut up, mut down) = (
         std::array::from_fn::<Int, 5, _>(|_| Int::one()),
         std::array::from_fn::<Int, 5, _>(|_| Int::one()),
     );
-    let divisors: [u32; 5] = std::array::from_fn(|k| small_prime_divisors(&c[k]));
-    let any = divisors.iter().fold(0, |a, d| a | d);
-    for (i, p) in SMALL_PRIMES.into_iter().enumerate() {
-        if any & (1 << i) == 0 {
-            continue;
-        }
-        let v: [Option<usize>; 5] = std::array::from_fn(|k| {
-            let divides = divisors[k] & (1 << i) != 0;
-            (!c[k].is_zero()).then(|| {
-                if divides {
-                    multiplicity_of_prime(&c[k], p)
-                } else {
-                    0
-                }
-            })
-        });
-        let pi = Int::from(i64::from(p));
+    for (pi, v) in factors {
         let e = best_exponents(&v, &sizes, pi.bits() as usize);
         for k in 0..5 {
             match e[k] {
@@ -736,8 +767,57 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
             c[k] = c[k].mul_int(&up[k]);
         }
     }
-    c.reverse();
     c
+}
+
+impl CharPoly {
+    /// The normalisation's rescaling of λ (module docs) by every constant
+    /// factor of the `c_k`, not only small primes: the factors `π > 1` of a
+    /// coprime basis of the contents of the `c_k` (factor refinement),
+    /// each with its multiplicities in them. It takes a gcd over every
+    /// coefficient of `f`, which costs more than it saves on ordinary long
+    /// scenes (contents of 6,700-bit degree-16 coefficients: +20M
+    /// instructions against 2.3M saved), so the exact path takes it only
+    /// for an `f` whose closed forms it would otherwise refuse as too long
+    /// (`bench-perturbed-affine-rational-deg2-d1000`: coefficients of
+    /// 66,500 bits with contents of 26,580 to 46,535).
+    pub fn without_constant_scalings(self) -> CharPoly {
+        let mut c = self.coeffs;
+        c.reverse();
+        let contents: [Option<Int>; 5] =
+            std::array::from_fn(|k| (!c[k].is_zero()).then(|| c[k].content()));
+        let basis = refine_coprime(
+            contents.iter().flatten().cloned().collect(),
+            |x: &Int| x.bits() >= 2,
+            Int::gcd,
+            Int::div_exact,
+        );
+        let factors = basis
+            .into_iter()
+            .map(|pi| {
+                let v = contents
+                    .each_ref()
+                    .map(|x| x.as_ref().map(|x| multiplicity_in(x, &pi)));
+                (pi, v)
+            })
+            .collect();
+        c = rescale(c, factors);
+        c.reverse();
+        CharPoly { coeffs: c }
+    }
+}
+
+/// How often `pi > 1` divides `x ≠ 0` (by repeated division: the
+/// contents' factors divide them a few times at most).
+fn multiplicity_in(x: &Int, pi: &Int) -> usize {
+    let (mut v, mut rest) = (0, x.clone());
+    loop {
+        let (q, r) = rest.div_rem_trunc(pi);
+        if !r.is_zero() {
+            return v;
+        }
+        (v, rest) = (v + 1, q);
+    }
 }
 
 /// The products of [`SMALL_PRIMES`] in words: one remainder by each
@@ -1179,6 +1259,38 @@ mod tests {
         assert_eq!(balance_primes(f.clone()), g);
         // Through the whole normalisation too (no polynomial factors).
         assert_eq!(normalise(f), g);
+    }
+
+    #[test]
+    fn long_constant_scalings_are_taken_out() {
+        // c_k = M89^k·M107^(4 − k)·g_k (k the power of λ) with two
+        // Mersenne primes: a rescaling of λ by M89/M107 that no small
+        // prime shows, and that balance_primes leaves.
+        let (m89, m107) = (
+            Int::from(2).pow(89) - Int::one(),
+            Int::from(2).pow(107) - Int::one(),
+        );
+        let g = [
+            ZPoly::from_i64s(&[4, -3, 1]),
+            ZPoly::from_i64s(&[1, 1]),
+            ZPoly::from_i64s(&[-6, 0, 5]),
+            ZPoly::from_i64s(&[2, 7]),
+            ZPoly::from_i64s(&[9, -2]),
+        ];
+        let f: [ZPoly; 5] = std::array::from_fn(|i| {
+            let k = 4 - i as u32;
+            g[i].mul_int(&(m89.pow(k) * m107.pow(4 - k)))
+        });
+        assert_eq!(balance_primes(f.clone()), f);
+        let balanced = CharPoly { coeffs: f.clone() }.without_constant_scalings();
+        assert_eq!(balanced.coeffs, g);
+        // With a common factor M107 in every c_k too: g again, and a
+        // positive multiple of a λ-rescaling of f.
+        let f2: [ZPoly; 5] = std::array::from_fn(|i| f[i].mul_int(&m107));
+        let f2 = CharPoly { coeffs: f2 };
+        let balanced = f2.clone().without_constant_scalings();
+        assert!(same_up_to_constant_scalings(&f2, &balanced));
+        assert_eq!(balanced.coeffs, g);
     }
 
     proptest::proptest! {
