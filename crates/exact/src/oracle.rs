@@ -24,6 +24,14 @@ use std::rc::Rc;
 /// second of this machine's time to form and isolate (docs/termination.md).
 pub const MAX_EXACT_BITS: u64 = 1 << 25;
 
+/// The longest coefficient of `f` (bits) whose contents
+/// [`CharPoly::without_constant_scalings`] takes before the size bound:
+/// within twice the bound `f` then has at most 75 coefficients (degree 14)
+/// at this length, each content a gcd of a few milliseconds, and shorter
+/// coefficients cost less in all (more of them, each gcd quadratically
+/// cheaper); a static pair of 10⁷-bit numbers would spend minutes.
+const CONTENT_BITS: u64 = 1 << 17;
+
 /// The placements' numbers (bits of both bodies, `PlacedQuadric::bits`)
 /// up to which a first-contact query forms `f(λ; u)` of two bodies that
 /// never turn before reading the state at `t0` off it.
@@ -364,7 +372,8 @@ impl Oracle for Exact<'_> {
             .take()
             .unwrap_or_else(|| self.char_poly());
         let mut size = exact_bits(&f);
-        if size > MAX_EXACT_BITS && size <= 2 * MAX_EXACT_BITS {
+        let longest = f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+        if size > MAX_EXACT_BITS && size <= 2 * MAX_EXACT_BITS && longest <= CONTENT_BITS {
             // Long constant factors left in f (a positive rescaling of λ
             // and f: the sample read before stays valid, as below). Only
             // near the bound: the contents' gcds grow with f, and past

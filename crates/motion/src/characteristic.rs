@@ -807,9 +807,13 @@ impl CharPoly {
     }
 }
 
-/// How often `pi > 1` divides `x ≠ 0` (by repeated division: the
-/// contents' factors divide them a few times at most).
+/// How often `pi > 1` divides `x ≠ 0`: [`Int::valuation`] for a word
+/// `pi`, else by repeated division (a factor of more than 32 bits divides
+/// `x` fewer than `bits(x)/32` times).
 fn multiplicity_in(x: &Int, pi: &Int) -> usize {
+    if let Some(p) = pi.to_i64().and_then(|p| u32::try_from(p).ok()) {
+        return x.valuation(p, u64::MAX) as usize;
+    }
     let (mut v, mut rest) = (0, x.clone());
     loop {
         let (q, r) = rest.div_rem_trunc(pi);
@@ -1290,6 +1294,11 @@ mod tests {
         let f2 = CharPoly { coeffs: f2 };
         let balanced = f2.clone().without_constant_scalings();
         assert!(same_up_to_constant_scalings(&f2, &balanced));
+        assert_eq!(balanced.coeffs, g);
+        // A word-sized factor alone (the valuation's path): 1000003^k.
+        let w = Int::from(1_000_003);
+        let f3: [ZPoly; 5] = std::array::from_fn(|i| g[i].mul_int(&w.pow(4 - i as u32)));
+        let balanced = CharPoly { coeffs: f3 }.without_constant_scalings();
         assert_eq!(balanced.coeffs, g);
     }
 
