@@ -119,9 +119,11 @@ impl Int {
         k::is_zero(&k::div_rem_trunc(&self.0, &d.0).1)
     }
     /// How often `p ≥ 2` divides `self ≠ 0`, counted up to `cap` (the
-    /// least of the two): by the largest power `p^m` in a word, one word
-    /// remainder and one exact division by a word per `m` factors
-    /// (`p = 2`: the trailing zeros).
+    /// least of the two): by the largest power `P = p^m` in a word, then
+    /// `P², P⁴, …` while they divide and back down the same powers (a
+    /// number of divisions logarithmic in the count, not one per `m`
+    /// factors: `3^400000·x` took 0.56 s that way), the last factors from
+    /// a word remainder (`p = 2`: the trailing zeros).
     ///
     /// ```
     /// use ccd_arith::Int;
@@ -141,16 +143,37 @@ impl Int {
             (word, m) = (next, m + 1);
         }
         let (mut v, mut rest) = (0, self.clone());
+        // P^(2^i) for i = 0, 1, … while it divides (and the cap is not met).
+        let mut powers = vec![Int::from_u64(word)];
         while v < cap {
-            let mut r = rest.mod_u64(word);
-            if r != 0 {
-                while r % p == 0 && v < cap {
-                    (r, v) = (r / p, v + 1);
-                }
+            let top = powers.last().expect("one power at least");
+            let (q, r) = rest.div_rem_trunc(top);
+            if !r.is_zero() {
                 break;
             }
-            rest = rest.div_exact(&Int::from_u64(word));
-            v += m;
+            rest = q;
+            v += m << (powers.len() - 1);
+            let square = top * top;
+            if square.bits() > rest.bits() {
+                break;
+            }
+            powers.push(square);
+        }
+        // What is left is below P^(2^len): back down, bit by bit.
+        for (i, power) in powers.iter().enumerate().rev() {
+            if v >= cap {
+                break;
+            }
+            let (q, r) = rest.div_rem_trunc(power);
+            if r.is_zero() {
+                rest = q;
+                v += m << i;
+            }
+        }
+        // Fewer than m factors p are left: one word remainder.
+        let mut r = rest.mod_u64(word);
+        while v < cap && r != 0 && r % p == 0 {
+            (r, v) = (r / p, v + 1);
         }
         v.min(cap)
     }

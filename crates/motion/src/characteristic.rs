@@ -15,8 +15,10 @@
 //! `v_k` its multiplicity in `c_k`, we replace `c_k` by `c_k·π^(α + β·k)`
 //! for the integers `α, β` that keep every `c_k` a polynomial
 //! (`α + β·k >= −v_k`) and minimise `α + 2β`: the closed forms are
-//! isobaric (weights 4, 4, 8, 8, 12 with degrees 2, 2, 4, 4, 6), so every
-//! `sr_ij` is multiplied by `π^(m·(α + 2β))` and `deg sr0` drops by
+//! homogeneous of degrees `w` = 2, 2, 4, 4, 6 and isobaric of weights `i`
+//! = 6, 4, 10, 9, 12 (`sr22, sr20, sr11, sr10, sr0`;
+//! `ccd_subres::isobaric_weight`), so every `sr_ij` is multiplied by
+//! `π^(α·w + β·i) > 0`, `sr0` by `π^(6·(α + 2β))`, and `deg sr0` drops by
 //! `6·(α + 2β)·deg π`. This is what the paper's normalisation (make `f`
 //! monic, reduce, clear denominators) achieves, found without rational
 //! functions, and it also finds the λ-rescaling hidden in the homogeneous
@@ -27,8 +29,9 @@
 //! `c_k`) plays the part of `π` (`balance_primes`). Tiny radii and long
 //! decimals leave a constant rescaling of λ that the content alone cannot
 //! take out (`ratio-needle-k0064-*`, radii `1` and `10⁻⁶⁴`: `sr0` of 9,387
-//! bits, 6,336 of them content, becomes 3,068 bits); it also balances the
-//! sizes of the `c_k`, so that their `f64` views share one exponent range.
+//! bits, 6,336 of them content, becomes 3,068 bits), and usually brings
+//! the sizes of the `c_k` together (never lengthening the longest one,
+//! which the exact path's size bound reads).
 
 use crate::centred::{centred_characteristic, Centred, Offset};
 use crate::curve::{content, Integer};
@@ -482,25 +485,31 @@ fn coprime_basis(items: Vec<ZPoly>) -> Vec<ZPoly> {
         |p| p.degree().unwrap_or(0) > 0,
         ZPoly::gcd,
         |p, g| p.div_exact(g).expect("gcd divides"),
+        usize::MAX,
     )
+    .expect("no budget")
 }
 
 /// Factor refinement: `items` split into pairwise coprime `proper` elements
 /// (not constants, for polynomials; not units, for integers) whose products
 /// generate the same multiplicative structure: two elements with a proper
 /// gcd `g` are replaced by `g` and their cofactors until no two have one.
+/// `None` after `budget` gcds (chains such as `2^N·3`, `2^(N−1)·3` take
+/// `N` splits).
 fn refine_coprime<T>(
     mut items: Vec<T>,
     proper: impl Fn(&T) -> bool,
     gcd: impl Fn(&T, &T) -> T,
     quotient: impl Fn(&T, &T) -> T,
-) -> Vec<T> {
+    mut budget: usize,
+) -> Option<Vec<T>> {
     items.retain(&proper);
     let mut i = 0;
     while i < items.len() {
         let mut j = i + 1;
         let mut split = false;
         while j < items.len() {
+            budget = budget.checked_sub(1)?;
             let g = gcd(&items[i], &items[j]);
             if proper(&g) {
                 let a = quotient(&items[i], &g);
@@ -519,7 +528,7 @@ fn refine_coprime<T>(
             i += 1;
         }
     }
-    items
+    Some(items)
 }
 
 /// The normalisation's two integer polynomial types: exact [`ZPoly`], and
@@ -734,9 +743,16 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
             (Int::from(i64::from(p)), v)
         })
         .collect();
-    c = rescale(c, factors);
+    let mut scaled = rescale(c.clone(), factors);
+    scaled.reverse();
     c.reverse();
-    c
+    // sr0 only shortens, but the longest c_k may grow (a few bits), which
+    // the exact size bound reads: then f stays as it was.
+    let longest = |f: &[ZPoly; 5]| f.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+    if longest(&scaled) > longest(&c) {
+        return c;
+    }
+    scaled
 }
 
 /// `c_k·Π π^(α_π + β_π·k)` (`c` low → high in λ) for factors `π > 1`
@@ -782,16 +798,19 @@ impl CharPoly {
     /// (`bench-perturbed-affine-rational-deg2-d1000`: coefficients of
     /// 66,500 bits with contents of 26,580 to 46,535).
     pub fn without_constant_scalings(self) -> CharPoly {
-        let mut c = self.coeffs;
+        let mut c = self.coeffs.clone();
         c.reverse();
         let contents: [Option<Int>; 5] =
             std::array::from_fn(|k| (!c[k].is_zero()).then(|| c[k].content()));
-        let basis = refine_coprime(
+        let Some(basis) = refine_coprime(
             contents.iter().flatten().cloned().collect(),
             |x: &Int| x.bits() >= 2,
             Int::gcd,
             Int::div_exact,
-        );
+            REFINE_BUDGET,
+        ) else {
+            return self;
+        };
         let factors = basis
             .into_iter()
             .map(|pi| {
@@ -806,6 +825,12 @@ impl CharPoly {
         CharPoly { coeffs: c }
     }
 }
+
+/// The gcds [`CharPoly::without_constant_scalings`] may spend refining
+/// the contents into a coprime basis (five contents usually take a few
+/// dozen; exponent chains such as `2^N·3`, `2^(N−1)·3`, which the small
+/// primes leave when their sizes are close, take `N` and gain nothing).
+const REFINE_BUDGET: usize = 200;
 
 /// How often `pi > 1` divides `x ≠ 0`: [`Int::valuation`] for a word
 /// `pi`, else by repeated division (a factor of more than 32 bits divides
@@ -1263,6 +1288,109 @@ mod tests {
         assert_eq!(balance_primes(f.clone()), g);
         // Through the whole normalisation too (no polynomial factors).
         assert_eq!(normalise(f), g);
+        // The primes at the ends of the two words: 47^(30k)·97^(20(4 − k)).
+        let scale = |k: u32| Int::from(47).pow(30 * k) * Int::from(97).pow(20 * (4 - k));
+        let f: [ZPoly; 5] = std::array::from_fn(|i| g[i].mul_int(&scale(4 - i as u32)));
+        assert_eq!(balance_primes(f), g);
+    }
+
+    /// The exponents by brute force over the search's whole box, `β ∈
+    /// [−v_max, v_max]` and `α ∈ [−5·v_max, 5·v_max]`, in the order the
+    /// search takes them (β ascending; for each, the least feasible α), the
+    /// first of the least `(α + 2β, largest size)` kept.
+    fn best_exponents_brute(
+        v: &[Option<usize>; 5],
+        sizes: &[usize; 5],
+        size_pi: usize,
+    ) -> [i64; 5] {
+        let vmax = v.iter().flatten().copied().max().unwrap_or(0) as i64;
+        let exponents = |alpha: i64, beta: i64| -> [i64; 5] {
+            std::array::from_fn(|k| alpha + beta * k as i64)
+        };
+        let feasible = |e: &[i64; 5]| (0..5).all(|k| v[k].is_none_or(|vk| e[k] >= -(vk as i64)));
+        let largest = |e: &[i64; 5]| {
+            (0..5)
+                .filter(|&k| v[k].is_some())
+                .map(|k| sizes[k] as i64 + e[k] * size_pi as i64)
+                .max()
+                .unwrap_or(0)
+        };
+        let candidates = (-vmax..=vmax).filter_map(|beta| {
+            (-5 * vmax..=5 * vmax)
+                .map(|alpha| (alpha, exponents(alpha, beta)))
+                .find(|(_, e)| feasible(e))
+                .map(|(alpha, e)| ((alpha + 2 * beta, largest(&e)), e))
+        });
+        candidates
+            .fold(
+                None::<((i64, i64), [i64; 5])>,
+                |best, (key, e)| match best {
+                    Some((b, _)) if b <= key => best,
+                    _ => Some((key, e)),
+                },
+            )
+            .map_or([0; 5], |(_, e)| e)
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+        /// The bounded search finds the full search's exponents, ties
+        /// included (the β it skips are strictly worse than β = 0).
+        #[test]
+        fn bounded_search_finds_the_best_exponents(
+            v in proptest::collection::vec(proptest::option::weighted(0.85, 0usize..12), 5),
+            sizes in proptest::collection::vec(0usize..60, 5),
+            size_pi in 0usize..8,
+        ) {
+            let v: [Option<usize>; 5] = std::array::from_fn(|k| v[k]);
+            proptest::prop_assume!(v.iter().any(Option::is_some));
+            let sizes: [usize; 5] = std::array::from_fn(|k| sizes[k]);
+            // Only the exponents of nonzero c_k mean anything.
+            let (fast, brute) = (best_exponents(&v, &sizes, size_pi), best_exponents_brute(&v, &sizes, size_pi));
+            for k in (0..5).filter(|&k| v[k].is_some()) {
+                proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
+            }
+        }
+    }
+
+    #[test]
+    fn balancing_never_lengthens_the_longest_coefficient() {
+        // Found by review: the rescaling that shortens sr0 (1,025 → 965
+        // bits) would lengthen c_0 (302 → 312 bits), which the exact size
+        // bound reads; f stays as it was.
+        let c = |x: Int| ZPoly::constant(x);
+        let two = Int::from(2);
+        let f = [
+            c(two.pow(30) * Int::from(9)),
+            c(two.pow(20) * Int::from(7)),
+            c(two.pow(10) * Int::from(5)),
+            c(Int::from(3)),
+            c(Int::from(3).pow(190) + Int::one()),
+        ];
+        let longest = |f: &[ZPoly; 5]| f.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+        let balanced = balance_primes(f.clone());
+        assert!(longest(&balanced) <= longest(&f));
+    }
+
+    #[test]
+    fn refinement_stops_at_its_budget() {
+        let n = |x: i64| Int::from(x);
+        // 12 = 2²·3 and 18 = 2·3²: bases {2, 3} within a few gcds.
+        let basis = refine_coprime(
+            vec![n(12), n(18)],
+            |x: &Int| x.bits() >= 2,
+            Int::gcd,
+            Int::div_exact,
+            50,
+        );
+        let mut basis = basis.expect("within the budget");
+        basis.sort_by_key(|x| x.to_i64());
+        assert_eq!(basis, vec![n(2), n(3)]);
+        // An exponent chain 2^40·3, 2^39·3 needs about 40 splits.
+        let chain = vec![n(2).pow(40) * n(3), n(2).pow(39) * n(3)];
+        assert!(
+            refine_coprime(chain, |x: &Int| x.bits() >= 2, Int::gcd, Int::div_exact, 20).is_none()
+        );
     }
 
     #[test]
@@ -1307,17 +1435,18 @@ mod tests {
         /// Balancing multiplies `c_k` by `κ·σ^k` with positive constants
         /// (every sign Theorem 3.10 reads, every root in λ up to the
         /// positive factor σ) and never lengthens `sr0`; on planted powers
-        /// of small primes in κ and σ (beyond `i128`) it shortens it once
+        /// of small primes in κ and σ (beyond `i128`; 47 and 97 are the
+        /// ends of the two prime words) it shortens it once
         /// the `c_k` are more than `BALANCE_SPREAD` bits apart, and leaves
         /// `f` alone below that.
         #[test]
         fn balancing_only_rescales_and_shortens_sr0(
             g in proptest::collection::vec(proptest::collection::vec(-9i64..10, 1..4), 5),
-            kappa in proptest::collection::vec(0u32..40, 3),
-            sigma in proptest::collection::vec(0u32..40, 3),
+            kappa in proptest::collection::vec(0u32..40, 5),
+            sigma in proptest::collection::vec(0u32..40, 5),
         ) {
             proptest::prop_assume!(g.iter().all(|c| c.iter().any(|&x| x != 0)));
-            let primes = [2i64, 5, 41].map(Int::from);
+            let primes = [2i64, 5, 41, 47, 97].map(Int::from);
             let power = |e: &[u32], k: u32| {
                 primes.iter().zip(e).fold(Int::one(), |acc, (p, &e)| acc * p.pow(e * k))
             };
