@@ -667,6 +667,24 @@ mod tests {
         ZPoly::from_i64s(c)
     }
 
+    /// Coefficients 1,500 bits apart in size (a hidden rescaling of λ by
+    /// `2^375`, as in `bench-perturbed-rigid-deg2-d0030`): every view keeps
+    /// its value inside `f64`'s range, none underflows to 0 (with one shift
+    /// for all, `c_0`'s view would sit 1,400 bits below 1).
+    #[test]
+    fn tilted_views_stay_in_range() {
+        let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+            poly(&[k as i64 + 1, 1]).mul_int(&Int::from(2).pow(375 * (4 - k as u32)))
+        });
+        let f = Coefficients::new(CharPoly { coeffs });
+        let half = Interval::point(0.5);
+        for (k, view) in f.views.iter().enumerate() {
+            let v = view.enclose(half);
+            assert!(v.lo > 0.0 && v.hi.is_finite(), "view {k}: {v:?}");
+            assert!(v.lo.log2().abs() < 200.0, "view {k}: {v:?}");
+        }
+    }
+
     proptest! {
         /// The multi-precision sign is the exact closed form's whenever it
         /// decides: on long values, on values perturbed by `2^(−k)` of their
