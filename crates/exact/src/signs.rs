@@ -106,9 +106,10 @@ impl Coefficients {
             .max()
             .unwrap_or(0);
         let shift = (bits - VIEW_BITS).max(0);
-        let view_shift = |k: usize| shift - tilt * (4 - k as i64);
         Coefficients {
-            views: std::array::from_fn(|k| ScaledPoly::with_shift(&f.coeffs[k], view_shift(k))),
+            views: std::array::from_fn(|k| {
+                ScaledPoly::with_shift(&f.coeffs[k], view_shift(shift, tilt, k))
+            }),
             f,
             shift,
             tilt,
@@ -226,9 +227,9 @@ impl Coefficients {
         }
     }
 
-    /// The shift of view `k` (high → low): `f_k·2^(−view_shift(k))`.
+    /// The shift of view `k` (high → low) ([`view_shift`]).
     fn view_shift(&self, k: usize) -> i64 {
-        self.shift - self.tilt * (4 - k as i64)
+        view_shift(self.shift, self.tilt, k)
     }
 
     /// `−log2 σ` for `q`: the closed form of the views is `σ·q` with `σ =
@@ -285,6 +286,12 @@ fn slot(q: Quantity) -> usize {
         Quantity::Sr10 => 3,
         Quantity::Sr0 | Quantity::Var => 4,
     }
+}
+
+/// The shift of view `k` (high → low, the coefficient of `λ^(4 − k)`):
+/// the view is `f_k·2^(−view_shift)`, `λ ↦ 2^tilt·λ` then one shift.
+fn view_shift(shift: i64, tilt: i64, k: usize) -> i64 {
+    shift - tilt * (4 - k as i64)
 }
 
 /// Homogeneous degree of each closed form in the coefficients of `f`.

@@ -654,12 +654,12 @@ fn best_exponents(v: &[Option<usize>; 5], sizes: &[usize; 5], size_pi: usize) ->
             .max()
             .unwrap_or(0);
         let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
-        let maxdeg = (0..5)
+        let largest = (0..5)
             .filter(|&k| v[k].is_some())
             .map(|k| sizes[k] as i64 + e[k] * size_pi as i64)
             .max()
             .unwrap_or(0);
-        let key = (alpha + 2 * beta, maxdeg);
+        let key = (alpha + 2 * beta, largest);
         if best.as_ref().is_none_or(|(b, _)| key < *b) {
             best = Some((key, e));
         }
@@ -720,10 +720,9 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
     if most <= BALANCE_BITS || most - least <= BALANCE_SPREAD {
         return f;
     }
-    // Low → high for indexing by the power of λ.
-    let mut c = f;
-    c.reverse();
-    let divisors: [u32; 5] = std::array::from_fn(|k| small_prime_divisors(&c[k]));
+    // Indexed by the power of λ.
+    let c: [&ZPoly; 5] = std::array::from_fn(|k| &f[4 - k]);
+    let divisors: [u32; 5] = std::array::from_fn(|k| small_prime_divisors(c[k]));
     let any = divisors.iter().fold(0, |a, d| a | d);
     let factors = SMALL_PRIMES
         .into_iter()
@@ -734,7 +733,7 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
                 let divides = divisors[k] & (1 << i) != 0;
                 (!c[k].is_zero()).then(|| {
                     if divides {
-                        multiplicity_of_prime(&c[k], p)
+                        multiplicity_of_prime(c[k], p)
                     } else {
                         0
                     }
@@ -743,24 +742,21 @@ fn balance_primes(f: [ZPoly; 5]) -> [ZPoly; 5] {
             (Int::from(i64::from(p)), v)
         })
         .collect();
-    let mut scaled = rescale(c.clone(), factors);
-    scaled.reverse();
-    c.reverse();
+    let scaled = rescale(&f, factors);
     // sr0 only shortens, but the longest c_k may grow (a few bits), which
     // the exact size bound reads: then f stays as it was.
-    let longest = |f: &[ZPoly; 5]| f.iter().map(ZPoly::max_bits).max().unwrap_or(0);
-    if longest(&scaled) > longest(&c) {
-        return c;
+    if scaled.iter().map(ZPoly::max_bits).max().unwrap_or(0) > most {
+        return f;
     }
     scaled
 }
 
-/// `c_k·Π π^(α_π + β_π·k)` (`c` low → high in λ) for factors `π > 1`
-/// with multiplicities `v_k` in the `c_k` (`None` for `c_k = 0`): the
-/// exponents of [`best_exponents`] for each, then one division and one
-/// product per `c_k`.
-fn rescale(mut c: [ZPoly; 5], factors: Vec<(Int, [Option<usize>; 5])>) -> [ZPoly; 5] {
-    let sizes: [usize; 5] = std::array::from_fn(|k| c[k].max_bits() as usize);
+/// `c_k·Π π^(α_π + β_π·k)` for factors `π > 1` with multiplicities `v_k`
+/// in the `c_k` (`v` indexed by the power of λ, `None` for `c_k = 0`; `f`
+/// high → low as stored): the exponents of [`best_exponents`] for each,
+/// then one division and one product per `c_k`.
+fn rescale(f: &[ZPoly; 5], factors: Vec<(Int, [Option<usize>; 5])>) -> [ZPoly; 5] {
+    let sizes: [usize; 5] = std::array::from_fn(|k| f[4 - k].max_bits() as usize);
     let (mut up, mut down) = (
         std::array::from_fn::<Int, 5, _>(|_| Int::one()),
         std::array::from_fn::<Int, 5, _>(|_| Int::one()),
@@ -775,15 +771,19 @@ fn rescale(mut c: [ZPoly; 5], factors: Vec<(Int, [Option<usize>; 5])>) -> [ZPoly
             }
         }
     }
-    for k in 0..5 {
-        if !down[k].is_one() {
-            c[k] = c[k].div_exact_int(&down[k]);
+    std::array::from_fn(|i| {
+        let k = 4 - i;
+        let c = if down[k].is_one() {
+            f[i].clone()
+        } else {
+            f[i].div_exact_int(&down[k])
+        };
+        if up[k].is_one() {
+            c
+        } else {
+            c.mul_int(&up[k])
         }
-        if !up[k].is_one() {
-            c[k] = c[k].mul_int(&up[k]);
-        }
-    }
-    c
+    })
 }
 
 impl CharPoly {
@@ -798,10 +798,11 @@ impl CharPoly {
     /// (`bench-perturbed-affine-rational-deg2-d1000`: coefficients of
     /// 66,500 bits with contents of 26,580 to 46,535).
     pub fn without_constant_scalings(self) -> CharPoly {
-        let mut c = self.coeffs.clone();
-        c.reverse();
-        let contents: [Option<Int>; 5] =
-            std::array::from_fn(|k| (!c[k].is_zero()).then(|| c[k].content()));
+        // Indexed by the power of λ.
+        let contents: [Option<Int>; 5] = std::array::from_fn(|k| {
+            let c = &self.coeffs[4 - k];
+            (!c.is_zero()).then(|| c.content())
+        });
         let Some(basis) = refine_coprime(
             contents.iter().flatten().cloned().collect(),
             |x: &Int| x.bits() >= 2,
@@ -820,9 +821,9 @@ impl CharPoly {
                 (pi, v)
             })
             .collect();
-        c = rescale(c, factors);
-        c.reverse();
-        CharPoly { coeffs: c }
+        CharPoly {
+            coeffs: rescale(&self.coeffs, factors),
+        }
     }
 }
 

@@ -298,7 +298,6 @@ mod tests {
             prop_assert_eq!(a.squared(), &a * &a);
         }
 
-
         #[test]
         fn ring_identities(a in zpoly(12, 300), b in zpoly(12, 300), c in zpoly(12, 300)) {
             prop_assert_eq!(&(&a + &b) + &c, &a + &(&b + &c));
