@@ -392,9 +392,35 @@ fn unit_max<S: Scalar>(g: &[S; 3]) -> Result<([S; 3], usize), ContactError> {
 /// and `B` enter, not `f(λ)`, so the result is as narrow as their
 /// enclosures allow.
 fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 3], S) {
-    let like = lambda.clone();
     let mut z: [S; 4] = [x0[0].clone(), x0[1].clone(), x0[2].clone(), lambda];
-    let point = |v: f64| S::of_f64(v, &like);
+    // Exact inputs (zero width) are what they are: nothing to tighten.
+    // A step not available (a singular midpoint Jacobian, a value outside
+    // f64, or exact scalars, for which `meet` keeps nothing) leaves `z`.
+    if z.iter().any(|v| v.estimate_width() > 0.0) {
+        let zt = try_map(&z, |v| S::of_f64(v.estimate(), v));
+        let step = zt
+            .and_then(|zt| krawczyk_image(a, b, &z, &zt))
+            .and_then(|k| try_array(|i| k[i].meet(&z[i]).ok_or(ContactError::Kernel)).ok());
+        if let Some(next) = step {
+            z = next;
+        }
+    }
+    let [x0, x1, x2, l] = z;
+    ([x0, x1, x2], l)
+}
+
+/// Krawczyk's operator `K(Z) = z̃ − C·F(z̃) + (I − C·J(Z))·(Z − z̃)` of the
+/// system of [`krawczyk`] at the box `z` and the point `zt ∈ z`, not
+/// intersected with `z`; `C` is the `f64` inverse of `J(Z)`'s midpoint.
+/// `None` when that inverse or a piece of it is not available.
+pub(crate) fn krawczyk_image<S: Scalar>(
+    a: &Mat4<S>,
+    b: &Mat4<S>,
+    z: &[S; 4],
+    zt: &[S; 4],
+) -> Option<[S; 4]> {
+    let like = &z[3];
+    let point = |v: f64| S::of_f64(v, like);
     // A·X and (λA + B)·X, rows 0..2, X = (z₀, z₁, z₂, 1).
     let ax = |z: &[S; 4]| -> [S; 3] {
         std::array::from_fn(|r| {
@@ -406,62 +432,45 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
             (0..3).fold(b[r][3].clone(), |acc, c| acc.plus(&b[r][c].times(&z[c])))
         })
     };
-    let jacobian = |z: &[S; 4]| -> Mat4<S> {
-        let g = ax(z);
-        std::array::from_fn(|r| {
-            std::array::from_fn(|c| match (r < 3, c < 3) {
-                (true, true) => z[3].times(&a[r][c]).plus(&b[r][c]),
-                (true, false) => g[r].clone(),
-                (false, true) => g[c].times(&S::from_i64(2)),
-                (false, false) => S::zero(),
-            })
-        })
-    };
-    // One step: `None` when a piece of it is not available (a singular
-    // midpoint Jacobian, a value outside f64, or exact scalars, for which
-    // `meet` keeps nothing); then `z` stays as it came.
-    let step = || -> Option<[S; 4]> {
-        let zt = try_map(&z, |v| point(v.estimate()))?;
-        let (g, h) = (ax(&zt), bx(&zt));
-        // F(z̃): rows 0..2 λ·(A X) + B X; row 3 XᵀAX = x·(A X)₀..₂ + (A X)₃.
-        let a3 = (0..3).fold(a[3][3].clone(), |acc, c| acc.plus(&a[3][c].times(&zt[c])));
-        let f: [S; 4] = std::array::from_fn(|r| {
-            if r < 3 {
-                zt[3].times(&g[r]).plus(&h[r])
-            } else {
-                (0..3).fold(a3.clone(), |acc, c| acc.plus(&zt[c].times(&g[c])))
-            }
-        });
-        let j = jacobian(&z);
-        let mid: Mat4<f64> = j.each_ref().map(|row| row.each_ref().map(|v| v.estimate()));
-        let det = ccd_quadric::det4(&mid);
-        let adj = ccd_quadric::adj4(&mid);
-        if !(det.is_finite() && det != 0.0) {
-            return None;
+    let (g, h) = (ax(zt), bx(zt));
+    // F(z̃): rows 0..2 λ·(A X) + B X; row 3 XᵀAX = x·(A X)₀..₂ + (A X)₃.
+    let a3 = (0..3).fold(a[3][3].clone(), |acc, c| acc.plus(&a[3][c].times(&zt[c])));
+    let f: [S; 4] = std::array::from_fn(|r| {
+        if r < 3 {
+            zt[3].times(&g[r]).plus(&h[r])
+        } else {
+            (0..3).fold(a3.clone(), |acc, c| acc.plus(&zt[c].times(&g[c])))
         }
-        let c = try_map(&adj, |row| try_map(row, |v| point(v / det)))?;
-        let dz: [S; 4] = std::array::from_fn(|k| z[k].minus(&zt[k]));
-        try_map(&[0, 1, 2, 3], |&i| {
-            let mut v = zt[i].clone();
-            for (k, fk) in f.iter().enumerate() {
-                v = v.minus(&c[i][k].times(fk));
-            }
-            for (jj, dzj) in dz.iter().enumerate() {
-                let cj = (0..4).fold(S::zero(), |acc, k| acc.plus(&c[i][k].times(&j[k][jj])));
-                let e = S::from_i64((i == jj) as i64).minus(&cj);
-                v = v.plus(&e.times(dzj));
-            }
-            v.meet(&z[i])
+    });
+    let gz = ax(z);
+    let j: Mat4<S> = std::array::from_fn(|r| {
+        std::array::from_fn(|c| match (r < 3, c < 3) {
+            (true, true) => z[3].times(&a[r][c]).plus(&b[r][c]),
+            (true, false) => gz[r].clone(),
+            (false, true) => gz[c].times(&S::from_i64(2)),
+            (false, false) => S::zero(),
         })
-    };
-    // Exact inputs (zero width) are what they are: nothing to tighten.
-    if z.iter().any(|v| v.estimate_width() > 0.0) {
-        if let Some(next) = step() {
-            z = next;
-        }
+    });
+    let mid: Mat4<f64> = j.each_ref().map(|row| row.each_ref().map(|v| v.estimate()));
+    let det = ccd_quadric::det4(&mid);
+    let adj = ccd_quadric::adj4(&mid);
+    if !(det.is_finite() && det != 0.0) {
+        return None;
     }
-    let [x0, x1, x2, l] = z;
-    ([x0, x1, x2], l)
+    let c = try_map(&adj, |row| try_map(row, |v| point(v / det)))?;
+    let dz: [S; 4] = std::array::from_fn(|k| z[k].minus(&zt[k]));
+    Some(std::array::from_fn(|i| {
+        let mut v = zt[i].clone();
+        for (k, fk) in f.iter().enumerate() {
+            v = v.minus(&c[i][k].times(fk));
+        }
+        for (jj, dzj) in dz.iter().enumerate() {
+            let cj = (0..4).fold(S::zero(), |acc, k| acc.plus(&c[i][k].times(&j[k][jj])));
+            let e = S::from_i64((i == jj) as i64).minus(&cj);
+            v = v.plus(&e.times(dzj));
+        }
+        v
+    }))
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
@@ -703,6 +712,9 @@ pub fn failed(e: ContactError) -> Geometry {
 
 #[cfg(test)]
 mod tests;
+
+pub mod least_point;
+pub use least_point::least_point;
 
 /// `f64` intervals for the contact formulas without subnormal ends.
 ///

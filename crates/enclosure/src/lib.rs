@@ -28,6 +28,6 @@ pub mod trig;
 
 pub use ccd_arith::{BigInterval, Dyadic};
 pub use dual::Dual;
-pub use placement::{centred_quadrics, invariants_at, quadric_at};
+pub use placement::{centred_quadrics, invariants_at, quadric_at, unit_frame, UnitFrame};
 pub use real::Real;
 pub use trig::{sin_cos, Trig};

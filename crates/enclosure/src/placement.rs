@@ -320,6 +320,59 @@ pub fn centred_quadrics<N: Trig>(
     )
 }
 
+/// Body `a`'s unit-sphere frame at the time `t`: coordinates `s` in which
+/// `a` is the unit ball `|s| ≤ 1` (its quadric, up to a positive factor,
+/// `diag(1, 1, 1, −1)`), and `b`'s quadric in them.
+///
+/// With `Nₐ` the inverse placement of `a` (world → body, up to a factor)
+/// and `S = diag(rₐ, 1)`, `W = adj(Nₐ)·S` maps `(s, 1)` to a world point
+/// in homogeneous coordinates, and `b`'s quadric in the frame is
+/// `(N_b·W)ᵀ·D_b·(N_b·W)`. The frame's entries carry `a`'s radii as
+/// factors, not their inverse squares: a needle or a disc of extreme ratio
+/// gives small entries here instead of huge cancelling ones.
+#[derive(Clone, Debug)]
+pub struct UnitFrame<N> {
+    /// `W`: `(s, 1)` ↦ world point (homogeneous; divide by the last entry).
+    pub to_world: Mat4<N>,
+    /// `Nₐ`: world → `a`'s body coordinates, up to a nonzero factor
+    /// (`Nₐ[3] = (0, 0, 0, w)`; `a`'s outward normal at the frame point
+    /// `s` points along `w·Nₐ[0..3][0..3]ᵀ·(s/rₐ)`).
+    pub inverse_a: Mat4<N>,
+    /// `b`'s quadric in the frame (positive factor).
+    pub quadric_b: Mat4<N>,
+}
+
+/// [`UnitFrame`] of the bodies at `t`.
+pub fn unit_frame<N: Trig>(a: &Body, b: &Body, span: &[Rat; 2], t: &N, prec: u32) -> UnitFrame<N> {
+    let inverse_a = inverse_placement(&a.motion, span, t, prec);
+    let radii: [N; 3] = konst_vec(&a.radii, prec);
+    let adj = ccd_quadric::adj4(&inverse_a);
+    let to_world: Mat4<N> = std::array::from_fn(|i| {
+        std::array::from_fn(|j| match radii.get(j) {
+            Some(r) => adj[i][j].times(r),
+            None => adj[i][j].clone(),
+        })
+    });
+    let nb = inverse_placement(&b.motion, span, t, prec);
+    let m: Mat4<N> = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..4).fold(N::zero(), |acc, k| {
+                if nb[i][k].is_zero() || to_world[k][j].is_zero() {
+                    acc
+                } else {
+                    acc.plus(&nb[i][k].times(&to_world[k][j]))
+                }
+            })
+        })
+    });
+    let quadric_b = congruence(&m, &body_diagonal(&konst_vec(&b.radii, prec)));
+    UnitFrame {
+        to_world,
+        inverse_a,
+        quadric_b,
+    }
+}
+
 /// `f(λ; t) = det(λA(t) + B(t))` as `[e, a, b, c, d]` (high → low),
 /// enclosed in `N` at the time `t`.
 pub fn characteristic_at<N: Trig>(a: &Body, b: &Body, span: &[Rat; 2], t: &N, prec: u32) -> [N; 5] {

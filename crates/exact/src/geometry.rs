@@ -2,25 +2,25 @@
 //! certified point and normal at each contact, refining the contact's
 //! enclosure when the box is too wide.
 
-use crate::signs::{model, Coefficients};
-
-use ccd_arith::{Int, Rat};
+use ccd_arith::{Int, Interval, Rat};
 use ccd_contact::{enclose, enclose_to_goal, from_quadrics, Case, ContactError, Goal};
+use ccd_enclosure::BigInterval;
 use ccd_motion::PlacedQuadric;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, SignModel};
 use ccd_subres::{closed_form, Quantity};
 use ccd_timeline::{Box3, Geometry};
-use std::rc::Rc;
 
 /// The exact path's stages, cheapest first: how far to narrow the
 /// contact's enclosure first (a factor `2^−bits`) and the precisions then
-/// tried (53: `f64` intervals). The exact rational evaluation at a rational
-/// instant comes after the `f64` stages. The last three serve extreme
+/// tried for the closed forms (53: `f64` intervals), each stage followed
+/// by [`Bodies::least_point`]. The exact rational evaluation at a rational
+/// instant comes after the `f64` stages. The last three served extreme
 /// radius ratios (`ratio-needle-k0064-*`: radii 1 and 10⁻⁶⁴), where the
 /// closed forms cancel so heavily that `sr11` is separated from 0 only on
-/// an enclosure of the instant some 10⁻¹⁶⁰ wide, at 4096 bits; they run
-/// only when every cheaper stage missed the goal.
+/// an enclosure of the instant some 10⁻¹⁶⁰ wide, at 2,048 bits; the least
+/// point proves those contacts in `f64` now, and the stages remain for a
+/// contact it cannot prove.
 const STAGES: [(i64, &[u32]); 7] = [
     (0, &[53]),
     (20, &[53]),
@@ -107,26 +107,33 @@ impl<'a> Bodies<'a> {
             .unwrap_or_else(ccd_contact::failed)
     }
 
+    /// The contact as A's point where B's quadric is least, proven by
+    /// Krawczyk's test in A's unit-sphere frame ([`ccd_contact::least_point`])
+    /// for every time in `[lo, hi]`, in `f64` intervals, then 128 bits:
+    /// `None` unless it meets the goal. It needs no case of Theorem 3.10(2)
+    /// and no closed form, so it holds where those cancel (a needle or a
+    /// disc of extreme radius ratio).
+    fn least_point(&self, lo: &Rat, hi: &Rat) -> Option<Geometry> {
+        let bodies = (&self.scene.a, &self.scene.b, &self.scene.span);
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        let fast = || ccd_contact::least_point::<Interval>(bodies, (lo, hi), 53).ok();
+        let big = || ccd_contact::least_point::<BigInterval>(bodies, (lo, hi), 128).ok();
+        let met = |g: &Geometry| self.goal.met(g);
+        fast()
+            .and_then(|e| e.to_geometry(true))
+            .filter(met)
+            .or_else(|| big().and_then(|e| e.to_geometry(true)).filter(met))
+    }
+
     /// The certified geometry at the contact `root` (an isolated external
-    /// touch; `zeros` lists the quantities known to vanish there). The case
-    /// of Theorem 3.10(2) is decided exactly (the sign of `sr11` at the
-    /// root); then interval evaluation at increasing precision, and, while
+    /// touch) in the `case` of Theorem 3.10(2) that holds there (decided
+    /// exactly by the caller: the sign of `sr11` at the root): interval
+    /// evaluation of the closed forms at increasing precision, each stage
+    /// followed by [`Bodies::least_point`], and, while
     /// the box is wider than the goal, a narrower enclosure of the instant
     /// (after the instant has been reported: the reported instant is
     /// unchanged).
-    pub(crate) fn exact<M: SignModel + Clone>(
-        &self,
-        r: &mut RealRoot<M>,
-        coefficients: &Rc<Coefficients>,
-        zeros: &[Quantity],
-    ) -> Geometry {
-        let case = if zeros.contains(&Quantity::Sr11)
-            || r.sign_with(&model(coefficients, Quantity::Sr11)) == 0
-        {
-            Case::TwoDouble
-        } else {
-            Case::Simple
-        };
+    pub(crate) fn exact<M: SignModel + Clone>(&self, r: &mut RealRoot<M>, case: Case) -> Geometry {
         let mut last = None;
         let mut tried_rational = false;
         for (k, (bits, precisions)) in STAGES.into_iter().enumerate() {
@@ -146,6 +153,9 @@ impl<'a> Bodies<'a> {
             match enclose_to_goal((a, b, span), (&lo, &hi), case, goal, true, precisions) {
                 Ok((g, true)) => return g,
                 other => last = Some(other.map(|(g, _)| g)),
+            }
+            if let Some(g) = self.least_point(&lo, &hi) {
+                return g;
             }
         }
         match last {

@@ -9,6 +9,7 @@ use ccd_algorithm::{
 };
 use ccd_arith::{Int, Interval, Rat};
 use ccd_classify::sign_variations;
+use ccd_contact::Case;
 use ccd_motion::{placed_quadric, CharPoly};
 use ccd_poly::ZPoly;
 use ccd_quadric::characteristic;
@@ -65,8 +66,16 @@ pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), C
 /// A candidate of the exact path: a real root of `sr0` (or `sr11`) with
 /// exact rational bounds — from the filter (its model is `sr0`'s closed
 /// form over `f`'s coefficients) or from the exact isolation of the formed
-/// polynomial.
-pub enum ExactRoot {
+/// polynomial — and the signs proven at it so far.
+pub struct ExactRoot {
+    isolation: Isolation,
+    /// Signs proven at the root, each asked once: the touch test asks
+    /// `sr11`, and so does the case of the contact geometry after it.
+    known: Vec<(Quantity, i32)>,
+}
+
+/// Where an [`ExactRoot`] comes from.
+enum Isolation {
     /// A root the filter isolated.
     Filtered(RealRoot<ClosedForm>),
     /// A root of the formed polynomial's squarefree part.
@@ -77,15 +86,37 @@ pub enum ExactRoot {
 macro_rules! each {
     ($root:expr, $r:ident => $body:expr) => {
         match $root {
-            ExactRoot::Filtered($r) => $body,
-            ExactRoot::Isolated($r) => $body,
+            Isolation::Filtered($r) => $body,
+            Isolation::Isolated($r) => $body,
         }
     };
 }
 
 impl ExactRoot {
+    fn filtered(r: RealRoot<ClosedForm>) -> ExactRoot {
+        ExactRoot::of(Isolation::Filtered(r))
+    }
+    fn isolated(r: RealRoot) -> ExactRoot {
+        ExactRoot::of(Isolation::Isolated(r))
+    }
+    fn of(isolation: Isolation) -> ExactRoot {
+        ExactRoot {
+            isolation,
+            known: Vec::new(),
+        }
+    }
     fn ends(&self) -> (Rat, Rat) {
-        each!(self, r => (r.lo().clone(), r.hi().clone()))
+        each!(&self.isolation, r => (r.lo().clone(), r.hi().clone()))
+    }
+    /// The sign of `q` at the root ([`RealRoot::sign_with`]), proven once.
+    fn sign(&mut self, q: Quantity, coefficients: &Rc<Coefficients>) -> i32 {
+        if let Some(&(_, s)) = self.known.iter().find(|(k, _)| *k == q) {
+            return s;
+        }
+        let m = model(coefficients, q);
+        let s = each!(&mut self.isolation, r => r.sign_with(&m));
+        self.known.push((q, s));
+        s
     }
 }
 
@@ -286,8 +317,7 @@ struct RootSigns<'a>(&'a mut ExactRoot, &'a Rc<Coefficients>);
 
 impl Signs for RootSigns<'_> {
     fn sign(&mut self, q: Quantity) -> SignSet {
-        let m = model(self.1, q);
-        SignSet::exactly(each!(&mut *self.0, r => r.sign_with(&m)))
+        SignSet::exactly(self.0.sign(q, self.1))
     }
     /// Never asked: the touch test stops before `Var`.
     fn variations(&mut self) -> VarSet {
@@ -441,7 +471,7 @@ impl Oracle for Exact<'_> {
             let roots = RootIter::filtered(model(f, q), &zero, &one, &bernstein);
             return Some(Candidates {
                 degree: f.sr0_degree(),
-                roots: Box::new(stream(roots, ExactRoot::Filtered)),
+                roots: Box::new(stream(roots, ExactRoot::filtered)),
             });
         }
         if attempt > usize::from(q == Quantity::Sr0 && self.filtered) {
@@ -455,7 +485,7 @@ impl Oracle for Exact<'_> {
         let roots = ccd_solver::isolate_with(poly, square.as_ref(), &zero, &one).ok()?;
         Some(Candidates {
             degree: poly.degree(),
-            roots: Box::new(stream(roots, ExactRoot::Isolated)),
+            roots: Box::new(stream(roots, ExactRoot::isolated)),
         })
     }
 
@@ -464,7 +494,7 @@ impl Oracle for Exact<'_> {
     }
 
     fn refine(&self, r: &mut ExactRoot, _q: Quantity) -> Instant {
-        each!(&mut *r, x => x.refine_to(&self.width));
+        each!(&mut r.isolation, x => x.refine_to(&self.width));
         let (lo, hi) = r.ends();
         Instant {
             lo,
@@ -474,7 +504,15 @@ impl Oracle for Exact<'_> {
     }
 
     fn geometry(&self, r: &mut ExactRoot, zeros: &[Quantity], _instant: &Instant) -> Geometry {
-        each!(r, x => self.bodies().exact(x, self.coefficients(), zeros))
+        // The case of Theorem 3.10(2): the sign of sr11 at the root, which
+        // the touch test has proven already.
+        let sr11 =
+            (!zeros.contains(&Quantity::Sr11)).then(|| r.sign(Quantity::Sr11, self.coefficients()));
+        let case = match sr11 {
+            Some(s) if s != 0 => Case::Simple,
+            _ => Case::TwoDouble,
+        };
+        each!(&mut r.isolation, x => self.bodies().exact(x, case))
     }
 
     fn geometry_at(&self, u: &Rat, _zeros: &[Quantity]) -> Geometry {
