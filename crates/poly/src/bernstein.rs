@@ -253,16 +253,26 @@ impl Bernstein {
             return Bernstein::from_parts(lo.clone(), hi.clone(), Rat::one(), vec![Int::zero()]);
         };
         let w = hi - lo;
-        let big_p = p.compose_affine(lo, &w);
+        // `d^n·p(lo + w·u)` with its common power of two taken out (cheap,
+        // and after a substitution with a dyadic `w` the whole content in
+        // practice); an odd common factor, if any, stays (as for the
+        // children of a split, `normalised` with `content` unset): the gcd
+        // that would find it costs more than the conversion on
+        // coefficients of thousands of bits.
+        let mut big_p = p.compose_affine_multiple(lo, &w).into_coeffs();
+        if let Some(tz) = big_p.iter().filter_map(Int::trailing_zeros).min() {
+            if tz > 0 {
+                big_p.iter_mut().for_each(|c| *c = c.shr_floor(tz));
+            }
+        }
         let mut wn = Rat::one();
         for _ in 0..n {
             wn = &wn * &w;
         }
         let lc_exact = &Rat::from_int(p.leading().expect("nonzero").clone()) * &wn;
-        let kappa = &Rat::from_int(big_p.leading().expect("degree kept").clone()) / &lc_exact;
-        let c = reverse_shift_reverse(big_p.into_coeffs(), 1);
+        let kappa = &Rat::from_int(big_p[n].clone()) / &lc_exact;
+        let c = reverse_shift_reverse(big_p, 1);
         let (beta, f) = divide_binomials(c);
-        // `big_p` is primitive already: no second content gcd.
         Bernstein::normalised(lo.clone(), hi.clone(), &f / &kappa, beta, false)
     }
     /// The signs of `p`'s Bernstein coefficients on `[lo, hi]` (those of

@@ -22,13 +22,22 @@ pub(crate) fn content_of<'a>(c: impl IntoIterator<Item = &'a Int, IntoIter: Clon
     if let Some(g) = g {
         return Int::from_i128(g as i128);
     }
+    // The power of two apart: after a substitution `t = (a + w·u)/2^k` (a
+    // Bernstein conversion on a dyadic interval) the content is a large
+    // power of two, where the running gcd below would never reach 1 and
+    // every coefficient would cost a full gcd. The odd parts' gcd usually
+    // reaches 1 within two coefficients.
+    let Some(twos) = c.clone().filter_map(Int::trailing_zeros).min() else {
+        return Int::zero();
+    };
+    let odd = |x: &Int| x.abs().shr_floor(x.trailing_zeros().unwrap_or(0));
     // Start from the smallest coefficient (the gcd divides it), and reduce
     // each larger coefficient modulo the running gcd before the gcd itself:
     // one division instead of a binary gcd on full-size numbers.
     let Some(smallest) = c.clone().filter(|x| !x.is_zero()).min_by_key(|x| x.bits()) else {
         return Int::zero();
     };
-    let mut g = smallest.abs();
+    let mut g = odd(smallest);
     for x in c {
         if g.is_one() {
             break;
@@ -36,14 +45,15 @@ pub(crate) fn content_of<'a>(c: impl IntoIterator<Item = &'a Int, IntoIter: Clon
         if x.is_zero() {
             continue;
         }
+        let x = odd(x);
         let r = if x.bits() > g.bits() + 64 {
             x.div_rem_trunc(&g).1
         } else {
-            x.clone()
+            x
         };
         g = g.gcd(&r);
     }
-    g
+    g.shl(twos)
 }
 
 /// The content `g` of the entries ([`content_of`]) and the entries divided
@@ -368,6 +378,27 @@ mod tests {
             let scaled = p.mul_int(&Int::from(c));
             let want = scaled.coeffs().iter().fold(Int::zero(), |g, x| g.gcd(x));
             prop_assert_eq!(scaled.content(), want);
+        }
+
+        /// A long power of two in the content (a Bernstein conversion on a
+        /// dyadic interval) with an odd factor beside it, and coefficients
+        /// with more twos than the content: the content is still the gcd.
+        #[test]
+        fn content_with_a_long_power_of_two(
+            p in zpoly_deg(1, 8, 300),
+            odd in 0i64..500,
+            twos in 0u64..900,
+            extra in prop::collection::vec(0u64..64, 9),
+        ) {
+            let odd = Int::from(2 * odd + 1);
+            let c: Vec<Int> = p
+                .coeffs()
+                .iter()
+                .zip(&extra)
+                .map(|(x, e)| (x * &odd).shl(twos + e))
+                .collect();
+            let want = c.iter().fold(Int::zero(), |g, x| g.gcd(x));
+            prop_assert_eq!(content_of(&c), want);
         }
     }
 }
