@@ -78,8 +78,9 @@ impl<'a> Bodies<'a> {
     /// 3.10(2) from the exact sign of `sr11` at `u`, then the exact point
     /// ([`Bodies::at_rational`]), or, when `λ*` is not rational, the
     /// enclosures at the point instant `u` through the same precisions as
-    /// [`Bodies::exact`]. A kernel of `λ*·A + B` that is exactly not
-    /// one-dimensional is [`Geometry::NotASinglePoint`].
+    /// [`Bodies::exact`], with [`Bodies::least_point`] after `f64`. A
+    /// kernel of `λ*·A + B` that is exactly not one-dimensional is
+    /// [`Geometry::NotASinglePoint`].
     pub(crate) fn at_touch(&self, u: &Rat) -> Geometry {
         let (qa, qb) = (self.a.quadric_at(u), self.b.quadric_at(u));
         let f = ccd_quadric::characteristic(&qa, &qb);
@@ -101,9 +102,20 @@ impl<'a> Bodies<'a> {
         }
         let t = self.time(u);
         let (a, b, span) = (&self.scene.a, &self.scene.b, &self.scene.span);
+        // The closed forms in f64, the least point, then the closed forms
+        // at the other precisions.
+        let fast = enclose_to_goal((a, b, span), (&t, &t), case, &self.goal, true, &[53]);
+        if let Ok((g, true)) = fast {
+            return g;
+        }
+        if let Some(g) = self.least_point(&t, &t) {
+            return g;
+        }
         let mut precisions: Vec<u32> = STAGES.iter().flat_map(|(_, p)| p.iter().copied()).collect();
         precisions.dedup();
+        precisions.retain(|p| *p != 53);
         enclose((a, b, span), (&t, &t), case, &self.goal, true, &precisions)
+            .or_else(|e| fast.map(|(g, _)| g).map_err(|_| e))
             .unwrap_or_else(ccd_contact::failed)
     }
 
