@@ -523,4 +523,90 @@ mod tests {
             prop_assert_eq!(flat(bezier(&points, ws, &big, 128)), bezier_by_levels(&points, ws, &big, 128));
         }
     }
+
+    /// `a`'s unit-sphere frame: a point `s` of the unit sphere maps to a
+    /// point of `a`'s surface, `b`'s quadric in the frame is `b`'s world
+    /// quadric at the mapped point, and `w·N[0..3][0..3]ᵀ·(s/r)` points
+    /// along `a`'s outward gradient — for a turned static body, a moving
+    /// one and an affine one with a reflection (`w < 0`).
+    #[test]
+    fn unit_frame_maps_the_sphere_onto_the_body() {
+        use ccd_arith::BigInterval;
+        use ccd_motion::{Bezier, Motion};
+        let q = |p: i64, d: i64| Rat::from_frac(p, d);
+        let turned = Body {
+            radii: [q(3, 2), q(1, 3), r(2)],
+            motion: Motion::Static {
+                center: [r(1), q(-2, 7), r(3)],
+                orientation: [r(2), r(1), r(0), r(-1)],
+            },
+        };
+        let moving = Body {
+            radii: [r(1), q(1, 2), q(3, 4)],
+            motion: Motion::Translation {
+                center: Bezier::polynomial(vec![[r(-1), r(0), r(2)], [r(4), r(5), r(-2)]]),
+                orientation: [r(1), r(-2), r(2), r(1)],
+            },
+        };
+        let reflected = Body {
+            radii: [r(1), r(2), q(1, 2)],
+            motion: Motion::Affine {
+                matrix: Bezier::constant(
+                    [[-2, 1, 0, 3], [0, 1, 0, -1], [1, 0, 3, 2]].map(|row| row.map(Rat::from)),
+                ),
+            },
+        };
+        let span = [Rat::zero(), r(2)];
+        let prec = 300;
+        let t = BigInterval::from_rat(&q(3, 5), prec);
+        let on_sphere = [[q(3, 5), q(4, 5), r(0)], [r(0), q(-5, 13), q(12, 13)]];
+        for (a, b) in [
+            (&turned, &moving),
+            (&moving, &reflected),
+            (&reflected, &turned),
+        ] {
+            let frame = unit_frame::<BigInterval>(a, b, &span, &t, prec);
+            let (qa, qb) = (
+                quadric_at(a, &span, &t, prec),
+                quadric_at(b, &span, &t, prec),
+            );
+            for s in &on_sphere {
+                let hat: [BigInterval; 4] = std::array::from_fn(|i| {
+                    BigInterval::from_rat(s.get(i).unwrap_or(&Rat::one()), prec)
+                });
+                let apply = |m: &Mat4<BigInterval>, v: &[BigInterval; 4]| -> [BigInterval; 4] {
+                    std::array::from_fn(|i| {
+                        (0..4).fold(BigInterval::zero(), |acc, j| {
+                            acc.plus(&m[i][j].times(&v[j]))
+                        })
+                    })
+                };
+                let dot = |x: &[BigInterval; 4], y: &[BigInterval; 4]| {
+                    (0..4).fold(BigInterval::zero(), |acc, i| acc.plus(&x[i].times(&y[i])))
+                };
+                let x = apply(&frame.to_world, &hat);
+                // On a's surface.
+                assert!(dot(&x, &apply(&qa, &x)).contains_zero());
+                // b's quadric: the frame's at s is the world's at x.
+                let diff =
+                    dot(&hat, &apply(&frame.quadric_b, &hat)).minus(&dot(&x, &apply(&qb, &x)));
+                assert!(diff.contains_zero(), "{diff:?}");
+                // The normal rule against a's world gradient Q_a·X (X = x/x₃).
+                let n = &frame.inverse_a;
+                let w = n[3][3].approx().signum();
+                let rule: [f64; 3] = std::array::from_fn(|c| {
+                    w * (0..3)
+                        .map(|k| n[k][c].approx() * s[k].to_f64() / a.radii[k].to_f64())
+                        .sum::<f64>()
+                });
+                let grad = apply(&qa, &x);
+                let x3 = x[3].approx();
+                let g: [f64; 3] = std::array::from_fn(|c| grad[c].approx() / x3);
+                let cos = (0..3).map(|i| rule[i] * g[i]).sum::<f64>()
+                    / (rule.iter().map(|v| v * v).sum::<f64>().sqrt()
+                        * g.iter().map(|v| v * v).sum::<f64>().sqrt());
+                assert!((cos - 1.0).abs() < 1e-12, "{cos}");
+            }
+        }
+    }
 }
