@@ -111,8 +111,7 @@ pub fn least_point<N: Scalar + Real + Trig>(
     let mut z: [N; 4] = try_array(|i| widen(&guess[i], s_or_nu(&s, nu, i).abs() * 1e-9 + 1e-290))?;
     for _ in 0..ROUNDS {
         let mid: [N; 4] = std::array::from_fn(|i| Real::midpoint(&z[i]));
-        let k = krawczyk_image(&sphere, &q, &z, &mid);
-        let k = k.ok_or(fail.clone())?;
+        let k = krawczyk_image(&sphere, &q, &z, &mid, |k, _| Some(k)).ok_or(fail.clone())?;
         if k.iter().zip(&z).all(|(k, z)| k.strictly_inside(z)) {
             if Real::sign(&k[3]) != Some(1) {
                 return Err(fail);
@@ -135,8 +134,7 @@ fn tightened<N: Scalar + Real>(sphere: &Mat4<N>, q: &Mat4<N>, mut z: [N; 4]) -> 
     let widest = |z: &[N; 4]| z.iter().map(Real::width_f64).fold(0.0, f64::max);
     for _ in 0..TIGHTEN {
         let mid: [N; 4] = std::array::from_fn(|i| Real::midpoint(&z[i]));
-        let next = krawczyk_image(sphere, q, &z, &mid)
-            .and_then(|k| try_array(|i| k[i].intersect(&z[i]).ok_or(ContactError::Kernel)).ok());
+        let next = krawczyk_image(sphere, q, &z, &mid, |k, z| k.intersect(z));
         match next {
             Some(next) if widest(&next) <= widest(&z) / 2.0 => z = next,
             Some(next) => return next,
@@ -222,11 +220,13 @@ pub fn least_on_sphere(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<([f64; 3], f64
     }
     let (mut lo, mut hi) = (0.0, norm(g) * 2.0 + f64::MIN_POSITIVE);
     let mut mu = hi / 2.0;
+    // Converged: |s| = 1 to rounding, or μ no longer moves.
+    let tiny = 4.0 * f64::EPSILON;
     for _ in 0..400 {
         let s = solve(mu, &minus_g)?;
         let len = norm(&s);
         let phi = 1.0 / len - 1.0;
-        if phi.abs() < 4.0 * f64::EPSILON {
+        if phi.abs() < tiny {
             return Some((s.map(|x| x / len), mu));
         }
         if phi < 0.0 {
@@ -238,6 +238,9 @@ pub fn least_on_sphere(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<([f64; 3], f64
         let w = solve(mu, &s)?;
         let slope = s.iter().zip(&w).map(|(a, b)| a * b).sum::<f64>() / (len * len * len);
         let next = mu - phi / slope;
+        if (next - mu).abs() <= tiny * mu || hi - lo <= tiny * hi {
+            return Some((s.map(|x| x / len), mu));
+        }
         // Outside the bracket: bisect it, geometrically (μ may be tiny
         // beside H's largest entries, as for a needle touched on its side).
         mu = if next > lo && next < hi && next.is_finite() {

@@ -398,9 +398,7 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
     // f64, or exact scalars, for which `meet` keeps nothing) leaves `z`.
     if z.iter().any(|v| v.estimate_width() > 0.0) {
         let zt = try_map(&z, |v| S::of_f64(v.estimate(), v));
-        let step = zt
-            .and_then(|zt| krawczyk_image(a, b, &z, &zt))
-            .and_then(|k| try_array(|i| k[i].meet(&z[i]).ok_or(ContactError::Kernel)).ok());
+        let step = zt.and_then(|zt| krawczyk_image(a, b, &z, &zt, |k, z| k.meet(z)));
         if let Some(next) = step {
             z = next;
         }
@@ -410,14 +408,17 @@ fn krawczyk<S: Scalar>(a: &Mat4<S>, b: &Mat4<S>, x0: [S; 3], lambda: S) -> ([S; 
 }
 
 /// Krawczyk's operator `K(Z) = z̃ − C·F(z̃) + (I − C·J(Z))·(Z − z̃)` of the
-/// system of [`krawczyk`] at the box `z` and the point `zt ∈ z`, not
-/// intersected with `z`; `C` is the `f64` inverse of `J(Z)`'s midpoint.
-/// `None` when that inverse or a piece of it is not available.
+/// system of [`krawczyk`] at the box `z` and the point `zt ∈ z`, each
+/// component `Kᵢ` passed through `each(Kᵢ, Zᵢ)` (`meet` to tighten,
+/// `Some` to test inclusion); `C` is the `f64` inverse of `J(Z)`'s
+/// midpoint. `None` when that inverse or a piece of it is not available,
+/// or `each` gives `None` (the components after it are not computed).
 pub(crate) fn krawczyk_image<S: Scalar>(
     a: &Mat4<S>,
     b: &Mat4<S>,
     z: &[S; 4],
     zt: &[S; 4],
+    each: impl Fn(S, &S) -> Option<S>,
 ) -> Option<[S; 4]> {
     let like = &z[3];
     let point = |v: f64| S::of_f64(v, like);
@@ -459,7 +460,7 @@ pub(crate) fn krawczyk_image<S: Scalar>(
     }
     let c = try_map(&adj, |row| try_map(row, |v| point(v / det)))?;
     let dz: [S; 4] = std::array::from_fn(|k| z[k].minus(&zt[k]));
-    Some(std::array::from_fn(|i| {
+    try_map(&[0, 1, 2, 3], |&i| {
         let mut v = zt[i].clone();
         for (k, fk) in f.iter().enumerate() {
             v = v.minus(&c[i][k].times(fk));
@@ -469,8 +470,8 @@ pub(crate) fn krawczyk_image<S: Scalar>(
             let e = S::from_i64((i == jj) as i64).minus(&cj);
             v = v.plus(&e.times(dzj));
         }
-        v
-    }))
+        each(v, &z[i])
+    })
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
