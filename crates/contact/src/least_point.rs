@@ -91,6 +91,28 @@ pub fn least_point<N: Scalar + Real + Trig>(
         .quadric_b
         .each_ref()
         .map(|row| row.each_ref().map(|x| x.times(&scale)));
+    let approx = |i: usize, j: usize| Real::approx(&q[i][j]);
+    let h: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| approx(i, j)));
+    let g: [f64; 3] = std::array::from_fn(|i| approx(i, 3));
+    let (s, nu) = least_on_sphere(&h, &g).ok_or(fail.clone())?;
+    let point = |v: f64| N::of_f64(v, &time).ok_or(fail.clone());
+    let guess: [N; 4] = [point(s[0])?, point(s[1])?, point(s[2])?, point(nu)?];
+    let z = proven_minimiser(&q, &guess, prec)?;
+    enclosed(a, &frame, &z, prec)
+}
+
+/// A box of `(s, ν)` proven to hold the one zero of `F(·; t)` for every
+/// `t` of the enclosure `q` of B's quadric, with `ν > 0`: the least point
+/// (module docs). ε-inflation from `guess`: a box around it, then each
+/// Krawczyk image widened by a quarter, at most [`ROUNDS`] times; the
+/// proof is `K(Z) ⊂ int Z` in all four components (a box with an infinite
+/// end is refused: its midpoint need not lie in it).
+fn proven_minimiser<N: Scalar + Real>(
+    q: &Mat4<N>,
+    guess: &[N; 4],
+    prec: u32,
+) -> Result<[N; 4], ContactError> {
+    let fail = ContactError::Undecided("the least point on A");
     let sphere: Mat4<N> = std::array::from_fn(|i| {
         std::array::from_fn(|j| match (i == j, i) {
             (true, 3) => N::from_i64(-1),
@@ -98,25 +120,23 @@ pub fn least_point<N: Scalar + Real + Trig>(
             _ => N::zero(),
         })
     });
-    let approx = |i: usize, j: usize| Real::approx(&q[i][j]);
-    let h: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| approx(i, j)));
-    let g: [f64; 3] = std::array::from_fn(|i| approx(i, 3));
-    let (s, nu) = least_on_sphere(&h, &g).ok_or(fail.clone())?;
-    let point = |v: f64| N::of_f64(v, &time).ok_or(fail.clone());
-    let guess: [N; 4] = [point(s[0])?, point(s[1])?, point(s[2])?, point(nu)?];
-    // ε-inflation: a box around the guess, grown from each image.
     let widen = |x: &N, d: f64| -> Result<N, ContactError> {
-        Ok(x.plus(&<N as Real>::unit(prec).times(&point(d)?)))
+        let d = N::of_f64(d, x).ok_or(fail.clone())?;
+        Ok(x.plus(&<N as Real>::unit(prec).times(&d)))
     };
-    let mut z: [N; 4] = try_array(|i| widen(&guess[i], s_or_nu(&s, nu, i).abs() * 1e-9 + 1e-290))?;
+    let mut z: [N; 4] =
+        try_array(|i| widen(&guess[i], Real::approx(&guess[i]).abs() * 1e-9 + 1e-290))?;
     for _ in 0..ROUNDS {
+        if !z.iter().all(Real::is_finite) {
+            return Err(fail);
+        }
         let mid: [N; 4] = std::array::from_fn(|i| Real::midpoint(&z[i]));
-        let k = krawczyk_image(&sphere, &q, &z, &mid, |k, _| Some(k)).ok_or(fail.clone())?;
+        let k = krawczyk_image(&sphere, q, &z, &mid, |k, _| Some(k)).ok_or(fail.clone())?;
         if k.iter().zip(&z).all(|(k, z)| k.strictly_inside(z)) {
             if Real::sign(&k[3]) != Some(1) {
                 return Err(fail);
             }
-            return enclosed(a, &frame, &tightened(&sphere, &q, k), prec);
+            return Ok(tightened(&sphere, q, k));
         }
         z = try_array(|i| {
             let hull = k[i].hull(&z[i].midpoint());
@@ -142,11 +162,6 @@ fn tightened<N: Scalar + Real>(sphere: &Mat4<N>, q: &Mat4<N>, mut z: [N; 4]) -> 
         }
     }
     z
-}
-
-/// The guess's `i`-th unknown.
-fn s_or_nu(s: &[f64; 3], nu: f64, i: usize) -> f64 {
-    s.get(i).copied().unwrap_or(nu)
 }
 
 /// The world point and A's outward normal (∞-norm 1) from the proven box
@@ -346,6 +361,19 @@ mod tests {
                 int([1, 0, 0]),
             ),
             (
+                // Off A's axes with unequal radii: the normal is along
+                // (x/4, y/25, 0) ∝ (15, 8, 0), not along the frame's s.
+                "off-axis contact on an ellipsoid",
+                placed(int([2, 5, 1]), int([0, 0, 0]), id.clone()),
+                placed(
+                    [q(17, 5), q(17, 5), q(17, 5)],
+                    [q(21, 5), q(28, 5), Rat::zero()],
+                    id.clone(),
+                ),
+                [q(6, 5), Rat::from(4), Rat::zero()],
+                [Rat::one(), q(8, 15), Rat::zero()],
+            ),
+            (
                 // A needle of radius ratio 10⁶⁴ touched at its tip: its
                 // closed forms cancel past 2,000 bits.
                 "needle",
@@ -474,5 +502,66 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_moving_contact_is_held_over_the_whole_time_enclosure() {
+        // Unit spheres, B from (−4, −6/5, 0) to (4, −6/5, 0): they touch at
+        // t* = 3/10 at (−4/5, −3/5, 0); the least point moves with t, so
+        // an enclosure of an end of [lo, hi] alone would miss it.
+        let int = |v: [i64; 3]| v.map(Rat::from);
+        let a = placed(int([1, 1, 1]), int([0, 0, 0]), Motion::identity());
+        let b = Body {
+            radii: int([1, 1, 1]),
+            motion: Motion::Translation {
+                center: Bezier::polynomial(vec![
+                    [Rat::from(-4), q(-6, 5), Rat::zero()],
+                    [Rat::from(4), q(-6, 5), Rat::zero()],
+                ]),
+                orientation: Motion::identity(),
+            },
+        };
+        let span = [Rat::zero(), Rat::one()];
+        let point = [q(-4, 5), q(-3, 5), Rat::zero()];
+        let normal = [Rat::from(-1), q(-3, 4), Rat::zero()];
+        for (lo, hi) in [
+            (q(29, 100), q(3, 10)),
+            (q(3, 10), q(31, 100)),
+            (q(3, 10), q(3, 10)),
+        ] {
+            let e = least_point::<Interval>((&a, &b, &span), (&lo, &hi), 53).unwrap();
+            let (p, n) = boxes(&e);
+            assert!(
+                holds(&p, &point) && holds(&n, &normal),
+                "[{lo}, {hi}]: {p:?} {n:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_critical_point_with_a_negative_multiplier_is_refused() {
+        // A the unit ball, B's quadric |s − c|² − 1 with c = (3, 0, 0):
+        // (H + νI)s = −g holds at s = (1, 0, 0) with ν = 2 (the least
+        // point) and at s = (−1, 0, 0) with ν = −4 (the greatest).
+        let iv = |v: i64| Interval::point(v as f64);
+        let q: Mat4<Interval> = [
+            [iv(1), iv(0), iv(0), iv(-3)],
+            [iv(0), iv(1), iv(0), iv(0)],
+            [iv(0), iv(0), iv(1), iv(0)],
+            [iv(-3), iv(0), iv(0), iv(8)],
+        ];
+        let least = proven_minimiser(&q, &[iv(1), iv(0), iv(0), iv(2)], 53).unwrap();
+        for (x, want) in least.iter().zip([1.0, 0.0, 0.0, 2.0]) {
+            assert!(x.lo <= want && want <= x.hi && x.hi - x.lo < 1e-12, "{x:?}");
+        }
+        assert!(proven_minimiser(&q, &[iv(-1), iv(0), iv(0), iv(-4)], 53).is_err());
+        // A guess off in ν alone: the proof needs all four components.
+        let off = proven_minimiser(&q, &[iv(1), iv(0), iv(0), Interval::point(2.5)], 53);
+        if let Ok(z) = off {
+            assert!(z[3].lo <= 2.0 && 2.0 <= z[3].hi, "{z:?}");
+        }
+        // A box with an infinite end is refused.
+        let wide = [Interval::new(f64::NEG_INFINITY, 2.0), iv(0), iv(0), iv(2)];
+        assert!(proven_minimiser(&q, &wide, 53).is_err());
     }
 }
