@@ -44,9 +44,9 @@
 //! The guess is the minimiser itself, in `f64` at the middle of `T`
 //! ([`least_on_sphere`]).
 
-use crate::{krawczyk_image, try_array, unit_max, ContactError, Enclosed, Scalar};
+use crate::{either_normal, krawczyk_image, try_array, ContactError, Enclosed, Scalar};
 use ccd_arith::Rat;
-use ccd_enclosure::{unit_frame, Real, Trig};
+use ccd_enclosure::{quadric_at, unit_frame, Real, Trig};
 use ccd_motion::Body;
 use ccd_quadric::Mat4;
 
@@ -98,7 +98,7 @@ pub fn least_point<N: Scalar + Real + Trig>(
     let point = |v: f64| N::of_f64(v, &time).ok_or(fail.clone());
     let guess: [N; 4] = [point(s[0])?, point(s[1])?, point(s[2])?, point(nu)?];
     let z = proven_minimiser(&q, &guess, prec)?;
-    enclosed(a, &frame, &z, prec)
+    enclosed((a, b, span), &time, &frame, &z, prec)
 }
 
 /// A box of `(s, ν)` proven to hold the one zero of `F(·; t)` for every
@@ -165,9 +165,11 @@ fn tightened<N: Scalar + Real>(sphere: &Mat4<N>, q: &Mat4<N>, mut z: [N; 4]) -> 
 }
 
 /// The world point and A's outward normal (∞-norm 1) from the proven box
-/// `z` of `(s, ν)`, in the frame over the time enclosure.
+/// `z` of `(s, ν)`, in the frame over the time enclosure `time`; the
+/// normal from A's gradient or B's, as [`crate::from_quadrics`] chooses.
 fn enclosed<N: Scalar + Real + Trig>(
-    a: &Body,
+    (a, b, span): (&Body, &Body, &[Rat; 2]),
+    time: &N,
     frame: &ccd_enclosure::UnitFrame<N>,
     z: &[N; 4],
     prec: u32,
@@ -181,7 +183,9 @@ fn enclosed<N: Scalar + Real + Trig>(
         })
         .collect();
     let point = try_array(|i| Real::div(&world[i], &world[3]).ok_or(undecided.clone()))?;
-    // A's outward normal along w·N[0..3][0..3]ᵀ·(s/r) (`UnitFrame`).
+    // A's outward normal along w·N[0..3][0..3]ᵀ·(s/r) (`UnitFrame`); for
+    // a radius below the box's resolution (10⁻⁴⁰⁹⁶) s/r is too wide to
+    // sign, and B's negated gradient −Q_B·X (world) serves.
     let n = &frame.inverse_a;
     let w = Real::sign(&n[3][3])
         .filter(|s| *s != 0)
@@ -190,7 +194,7 @@ fn enclosed<N: Scalar + Real + Trig>(
         let r = a.radii[k].recip().unwrap_or_else(Rat::one);
         z[k].times(&<N as Real>::constant(&r, prec))
     });
-    let gradient: [N; 3] = std::array::from_fn(|c| {
+    let from_a: [N; 3] = std::array::from_fn(|c| {
         let g = (0..3).fold(N::zero(), |acc, k| acc.plus(&n[k][c].times(&over_r[k])));
         if w < 0 {
             g.negated()
@@ -198,7 +202,15 @@ fn enclosed<N: Scalar + Real + Trig>(
             g
         }
     });
-    let (normal, _) = unit_max(&gradient)?;
+    let qb = quadric_at(b, span, time, prec);
+    let from_b: [N; 3] = std::array::from_fn(|r| {
+        (0..3)
+            .fold(qb[r][3].clone(), |acc, c| {
+                acc.plus(&qb[r][c].times(&point[c]))
+            })
+            .negated()
+    });
+    let normal = either_normal(&from_a, &from_b)?;
     Ok(Enclosed { point, normal })
 }
 
@@ -322,6 +334,7 @@ mod tests {
         // The axis (3/5, 4/5, 0): the quaternion (2, 0, 0, 1) turns x onto it.
         let turned = [2, 0, 0, 1].map(Rat::from);
         let thin = Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(64)).unwrap();
+        let hair = Rat::new(ccd_arith::Int::one(), ccd_arith::Int::pow10(4096)).unwrap();
         let reflected = Body {
             radii: int([1, 1, 1]),
             motion: Motion::Affine {
@@ -374,11 +387,24 @@ mod tests {
                 [Rat::one(), q(8, 15), Rat::zero()],
             ),
             (
+                // A needle of radius 10⁻⁴⁰⁹⁶ touched at its tip: s/r is
+                // too wide to sign, and B's gradient gives the normal.
+                "needle of radius 10^-4096",
+                placed(
+                    [Rat::one(), hair.clone(), hair],
+                    int([0, 0, 0]),
+                    [2, 0, 0, 1].map(Rat::from),
+                ),
+                placed(int([1, 1, 1]), [q(6, 5), q(8, 5), Rat::zero()], id.clone()),
+                [q(3, 5), q(4, 5), Rat::zero()],
+                [q(3, 4), Rat::one(), Rat::zero()],
+            ),
+            (
                 // A needle of radius ratio 10⁶⁴ touched at its tip: its
                 // closed forms cancel past 2,000 bits.
                 "needle",
                 placed([Rat::one(), thin.clone(), thin], int([0, 0, 0]), turned),
-                placed(int([1, 1, 1]), [q(8, 5), q(32, 15), Rat::zero()], id),
+                placed(int([1, 1, 1]), [q(6, 5), q(8, 5), Rat::zero()], id),
                 [q(3, 5), q(4, 5), Rat::zero()],
                 [q(3, 4), Rat::one(), Rat::zero()],
             ),

@@ -327,14 +327,22 @@ pub fn from_quadrics<S: Scalar>(
             })
         })
     };
-    let from_a = unit_max(&gradient(a));
-    let from_b = unit_max(&gradient(b).map(|g| g.negated()));
-    let normal = match (from_a, from_b) {
+    let normal = either_normal(&gradient(a), &gradient(b).map(|g| g.negated()))?;
+    Ok(Enclosed { point, normal })
+}
+
+/// A's outward normal (∞-norm 1) from two enclosures of its direction at
+/// the contact, A's gradient `from_a` and B's negated gradient `from_b`:
+/// A's, unless B's is narrower by more than 2^20 (a very thin or flat A,
+/// whose large curvature widens its gradient's box): then B's, or, scaled
+/// by the same component, the common part of both enclosures of the same
+/// vector; whichever is proven nonzero when only one is.
+pub(crate) fn either_normal<S: Scalar>(
+    from_a: &[S; 3],
+    from_b: &[S; 3],
+) -> Result<[S; 3], ContactError> {
+    Ok(match (unit_max(from_a), unit_max(from_b)) {
         (Ok((na, ka)), Ok((nb, kb))) => {
-            // A's normal, unless B's is narrower by more than 2^20 (a very
-            // thin or flat A, whose large curvature widens its gradient's
-            // box): then B's, or, scaled by the same component, the common
-            // part of both enclosures of the same vector.
             let wide = |n: &[S; 3]| n.iter().map(S::estimate_width).fold(0.0, f64::max);
             if wide(&na) <= wide(&nb) * NORMAL_FROM_B {
                 na
@@ -347,8 +355,7 @@ pub fn from_quadrics<S: Scalar>(
         (Ok((na, _)), Err(_)) => na,
         (Err(_), Ok((nb, _))) => nb,
         (Err(e), Err(_)) => return Err(e),
-    };
-    Ok(Enclosed { point, normal })
+    })
 }
 
 /// How much narrower `−∇B`'s normal box must be than `∇A`'s to replace
