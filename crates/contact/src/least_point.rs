@@ -44,11 +44,13 @@
 //! The guess is the minimiser itself, in `f64` at the middle of `T`
 //! ([`least_on_sphere`]).
 
-use crate::{either_normal, krawczyk_image, try_array, ContactError, Enclosed, Scalar};
+use crate::{
+    either_normal, krawczyk_image, times_point, try_array, ContactError, Enclosed, Scalar,
+};
 use ccd_arith::Rat;
 use ccd_enclosure::{quadric_at, unit_frame, Real, Trig};
 use ccd_motion::Body;
-use ccd_quadric::Mat4;
+use ccd_quadric::{det3, Mat4};
 
 /// Inflation rounds before the test gives up.
 const ROUNDS: usize = 6;
@@ -175,13 +177,7 @@ fn enclosed<N: Scalar + Real + Trig>(
     prec: u32,
 ) -> Result<Enclosed<N>, ContactError> {
     let undecided = ContactError::Undecided("the least point's world box");
-    let world: Vec<N> = (0..4)
-        .map(|r| {
-            (0..3).fold(frame.to_world[r][3].clone(), |acc, c| {
-                acc.plus(&frame.to_world[r][c].times(&z[c]))
-            })
-        })
-        .collect();
+    let world: [N; 4] = times_point(&frame.to_world, z);
     let point = try_array(|i| Real::div(&world[i], &world[3]).ok_or(undecided.clone()))?;
     // A's outward normal along w·N[0..3][0..3]ᵀ·(s/r) (`UnitFrame`); for
     // a radius below the box's resolution (10⁻⁴⁰⁹⁶) s/r is too wide to
@@ -203,13 +199,7 @@ fn enclosed<N: Scalar + Real + Trig>(
         }
     });
     let qb = quadric_at(b, span, time, prec);
-    let from_b: [N; 3] = std::array::from_fn(|r| {
-        (0..3)
-            .fold(qb[r][3].clone(), |acc, c| {
-                acc.plus(&qb[r][c].times(&point[c]))
-            })
-            .negated()
-    });
+    let from_b = times_point::<N, 3>(&qb, &point).map(|g| g.negated());
     let normal = either_normal(&from_a, &from_b)?;
     Ok(Enclosed { point, normal })
 }
@@ -282,12 +272,6 @@ pub fn least_on_sphere(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<([f64; 3], f64
         }
     }
     None
-}
-
-fn det3(m: &[[f64; 3]; 3]) -> f64 {
-    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
 }
 
 #[cfg(test)]

@@ -320,13 +320,7 @@ pub fn from_quadrics<S: Scalar>(
     let (point, _) = krawczyk(a, b, point, lambda);
     // ∇(XᵀAX) and −∇(XᵀBX) at X*, first three components (halved): both
     // point along A's outward normal at a touch.
-    let gradient = |q: &Mat4<S>| -> [S; 3] {
-        std::array::from_fn(|r| {
-            (0..3).fold(q[r][3].clone(), |acc, c| {
-                acc.plus(&q[r][c].times(&point[c]))
-            })
-        })
-    };
+    let gradient = |q: &Mat4<S>| -> [S; 3] { times_point(q, &point) };
     let normal = either_normal(&gradient(a), &gradient(b).map(|g| g.negated()))?;
     Ok(Enclosed { point, normal })
 }
@@ -429,20 +423,10 @@ pub(crate) fn krawczyk_image<S: Scalar>(
 ) -> Option<[S; 4]> {
     let like = &z[3];
     let point = |v: f64| S::of_f64(v, like);
-    // A·X and (λA + B)·X, rows 0..2, X = (z₀, z₁, z₂, 1).
-    let ax = |z: &[S; 4]| -> [S; 3] {
-        std::array::from_fn(|r| {
-            (0..3).fold(a[r][3].clone(), |acc, c| acc.plus(&a[r][c].times(&z[c])))
-        })
-    };
-    let bx = |z: &[S; 4]| -> [S; 3] {
-        std::array::from_fn(|r| {
-            (0..3).fold(b[r][3].clone(), |acc, c| acc.plus(&b[r][c].times(&z[c])))
-        })
-    };
-    let (g, h) = (ax(zt), bx(zt));
+    // A·X and B·X, X = (z₀, z₁, z₂, 1).
+    let (g, h): ([S; 4], [S; 3]) = (times_point(a, zt), times_point(b, zt));
+    let a3 = &g[3];
     // F(z̃): rows 0..2 λ·(A X) + B X; row 3 XᵀAX = x·(A X)₀..₂ + (A X)₃.
-    let a3 = (0..3).fold(a[3][3].clone(), |acc, c| acc.plus(&a[3][c].times(&zt[c])));
     let f: [S; 4] = std::array::from_fn(|r| {
         if r < 3 {
             zt[3].times(&g[r]).plus(&h[r])
@@ -450,7 +434,7 @@ pub(crate) fn krawczyk_image<S: Scalar>(
             (0..3).fold(a3.clone(), |acc, c| acc.plus(&zt[c].times(&g[c])))
         }
     });
-    let gz = ax(z);
+    let gz: [S; 3] = times_point(a, z);
     let j: Mat4<S> = std::array::from_fn(|r| {
         std::array::from_fn(|c| match (r < 3, c < 3) {
             (true, true) => z[3].times(&a[r][c]).plus(&b[r][c]),
@@ -479,6 +463,13 @@ pub(crate) fn krawczyk_image<S: Scalar>(
         }
         each(v, &z[i])
     })
+}
+
+/// Rows `0..R` of `Q·(x, 1)` (`x` three coordinates, or more, of which the
+/// first three are read): a point's image under a homogeneous map, or
+/// half a quadric's gradient at it.
+pub(crate) fn times_point<S: RingOps, const R: usize>(q: &Mat4<S>, x: &[S]) -> [S; R] {
+    std::array::from_fn(|r| (0..3).fold(q[r][3].clone(), |acc, c| acc.plus(&q[r][c].times(&x[c]))))
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {

@@ -126,8 +126,8 @@ impl<'a> Bodies<'a> {
     /// and no closed form, so it holds where those cancel (a needle or a
     /// disc of extreme radius ratio).
     fn least_point(&self, lo: &Rat, hi: &Rat) -> Option<Geometry> {
+        // `t0 < t1` (a scene invariant), so lo <= hi.
         let bodies = (&self.scene.a, &self.scene.b, &self.scene.span);
-        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         let fast = || ccd_contact::least_point::<Interval>(bodies, (lo, hi), 53).ok();
         let big = || ccd_contact::least_point::<BigInterval>(bodies, (lo, hi), 128).ok();
         let met = |g: &Geometry| self.goal.met(g);

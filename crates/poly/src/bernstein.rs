@@ -55,6 +55,16 @@ pub struct Bernstein {
     coeffs: Vec<Int>,
 }
 
+/// Divides `coeffs` by their common power of two `2^tz` and returns `tz`
+/// (`None` when every one is 0).
+fn take_out_twos(coeffs: &mut [Int]) -> Option<u64> {
+    let tz = coeffs.iter().filter_map(Int::trailing_zeros).min()?;
+    if tz > 0 {
+        coeffs.iter_mut().for_each(|c| *c = c.shr_floor(tz));
+    }
+    Some(tz)
+}
+
 /// The power form `Σ_j a_j u^j` of `Σ_i b_i B_i^n(u)` (`n + 1 = b.len()`) on
 /// `[0, 1]` for integer `b_i`: the `a_j` are integers, from
 /// reverse–shift(−1)–reverse of `C(n,i)·b_i` (module docs; additions and
@@ -212,7 +222,7 @@ impl Bernstein {
             scale = -scale;
             coeffs.iter_mut().for_each(|c| *c = -&*c);
         }
-        let Some(tz) = coeffs.iter().filter_map(Int::trailing_zeros).min() else {
+        let Some(tz) = take_out_twos(&mut coeffs) else {
             return Bernstein {
                 lo,
                 hi,
@@ -221,7 +231,6 @@ impl Bernstein {
             };
         };
         if tz > 0 {
-            coeffs.iter_mut().for_each(|c| *c = c.shr_floor(tz));
             scale = scale.mul_pow2(tz as i64);
         }
         let g = if content {
@@ -260,11 +269,7 @@ impl Bernstein {
         // that would find it costs more than the conversion on
         // coefficients of thousands of bits.
         let mut big_p = p.compose_affine_multiple(lo, &w).into_coeffs();
-        if let Some(tz) = big_p.iter().filter_map(Int::trailing_zeros).min() {
-            if tz > 0 {
-                big_p.iter_mut().for_each(|c| *c = c.shr_floor(tz));
-            }
-        }
+        take_out_twos(&mut big_p);
         let mut wn = Rat::one();
         for _ in 0..n {
             wn = &wn * &w;
