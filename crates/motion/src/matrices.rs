@@ -312,6 +312,8 @@ pub struct PlacedQuadric {
     frame: Frame<ZPoly>,
     /// The body quadric `diag(D)` (interior `XᵀDX < 0`), scaled to integers.
     pub diagonal: [ZPoly; 4],
+    /// The body's radii, for [`PlacedQuadric::diagonal_products`].
+    radii: [Rat; 3],
     /// Primitive polynomials nonzero on the span such that `det M(u)` is a
     /// constant times a product of their powers.
     pub det_factors: Vec<ZPoly>,
@@ -322,6 +324,35 @@ impl PlacedQuadric {
     /// entries, up to a factor nonzero on the span.
     pub fn placement(&self) -> Mat4<ZPoly> {
         primitive_matrix(self.frame.forward())
+    }
+
+    /// The products `D(S)` of [`ccd_quadric::subset_products`] for the body quadric
+    /// `D̃ = diag(1/r₀², 1/r₁², 1/r₂², −1)` (over ℚ) times `(n₀n₁n₂)²`:
+    /// with `rᵢ = nᵢ/dᵢ` in lowest terms,
+    /// `D(S) = ±Π_(i ∈ S) dᵢ²·Π_(i ∉ S) nᵢ²` (`i < 3`; negative iff
+    /// `3 ∈ S`). The integer diagonal [`PlacedQuadric::diagonal`] is
+    /// `(n₀n₁n₂)²·D̃` up to a constant, whose products carry
+    /// `(n₀n₁n₂)^(2(|S| − 1))` more: a rescaling of λ
+    /// ([`ccd_quadric::placed_characteristic`]) that the normalisation's content removal
+    /// cannot take out when the `nᵢ` are long primes
+    /// (`bench-perturbed-affine-deg2-d0100`: 100-digit radii, `f` of 6,700
+    /// bits per coefficient after normalisation, 4,030 without it).
+    pub fn diagonal_products(&self) -> [Int; 16] {
+        let squares =
+            |part: fn(&Rat) -> &Int| self.radii.each_ref().map(|r| part(r).times(part(r)));
+        let (n, d) = (squares(Rat::numer), squares(Rat::denom));
+        let body: [Int; 8] = std::array::from_fn(|s| {
+            (0..3).fold(Int::one(), |p, i| {
+                p.times(if s >> i & 1 == 1 { &d[i] } else { &n[i] })
+            })
+        });
+        std::array::from_fn(|s| {
+            if s & 8 == 0 {
+                body[s].clone()
+            } else {
+                body[s & 7].negated()
+            }
+        })
     }
 
     /// The world → body matrix `N(u) ∝ M(u)⁻¹` with integer polynomial
@@ -495,6 +526,7 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
     Ok(PlacedQuadric {
         frame,
         diagonal: integer_diagonal::<Int>(&body.radii).map(ZPoly::constant),
+        radii: body.radii.clone(),
         det_factors,
     })
 }
@@ -704,6 +736,22 @@ mod tests {
             let (m, n) = rotation(&q);
             proptest::prop_assert_eq!(m, rotation_numerator(&q));
             proptest::prop_assert_eq!(n, norm2(&q));
+        }
+
+        /// The reduced diagonal products are those of `diag(1/r², −1)`
+        /// over ℚ times `(n₀n₁n₂)²`, all integers.
+        #[test]
+        fn diagonal_products_are_the_rational_ones_scaled(
+            radii in proptest::collection::vec((1i64..60, 1i64..60), 3),
+        ) {
+            let r: [Rat; 3] = std::array::from_fn(|i| Rat::from_frac(radii[i].0, radii[i].1));
+            let still = Motion::Static { center: [0, 0, 0].map(Rat::from), orientation: q([1, 0, 0, 0]) };
+            let body = Body { radii: r.clone(), motion: still };
+            let placed = placed_quadric(&body, &[Rat::zero(), Rat::one()]).expect("a static body");
+            let scale = r.iter().fold(Rat::one(), |p, x| &p * &Rat::from(x.numer() * x.numer()));
+            let [d0, d1, d2] = r.each_ref().map(|x| &Rat::one() / &(x * x));
+            let expected = ccd_quadric::subset_products(&[d0, d1, d2, Rat::from(-1)]).map(|p| &p * &scale);
+            proptest::prop_assert_eq!(placed.diagonal_products().map(Rat::from), expected);
         }
 
         /// The integer body diagonal is `body_diagonal` over ℚ times the

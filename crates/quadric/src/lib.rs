@@ -13,7 +13,7 @@ pub use ccd_classify::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
 pub use matrix::{
     adj3, adj4, adj4_column, characteristic, congruence, det3, det4, integral,
-    placed_characteristic, Mat3, Mat4,
+    placed_characteristic, subset_products, Mat3, Mat4,
 };
 pub use placement::{
     affine_inverse, affine_placement, body_diagonal, norm2, quat_mul, rigid_inverse,

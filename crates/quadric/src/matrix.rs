@@ -178,6 +178,26 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     f
 }
 
+/// `D(S) = Π_(c ∈ S) d_c` for every subset `S` of a diagonal's four
+/// indices (bit `c` of the table's index: entry `c`), the products
+/// [`placed_characteristic`] reads.
+///
+/// ```
+/// use ccd_quadric::subset_products;
+/// let p = subset_products(&[2i64, 3, 5, 7].map(ccd_arith::Int::from));
+/// assert_eq!(p[0b0101], ccd_arith::Int::from(10));
+/// assert_eq!(p[0b1111], ccd_arith::Int::from(210));
+/// ```
+pub fn subset_products<R: RingOps>(d: &[R; 4]) -> [R; 16] {
+    let mut p: [R; 16] = std::array::from_fn(|_| R::one());
+    for (c, dc) in d.iter().enumerate() {
+        for s in 0..1 << c {
+            p[s | 1 << c] = p[s].times(dc);
+        }
+    }
+    p
+}
+
 /// The characteristic quartic of two placed bodies from their placements,
 /// without forming either quadric: for `A = M_A^(−T)·D_A·M_A^(−1)` and
 /// `B = M_B^(−T)·D_B·M_B^(−1)` (`M` maps body to world coordinates,
@@ -187,7 +207,15 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
 ///
 /// the sum over the 70 four-column subsets `T` of the 4×8 matrix
 /// `[M_A | M_B]`, with `P_T` its Plücker coordinates (4×4 minors) and
-/// `D(S)` the product of the diagonal entries indexed by `S`.
+/// `D(S)` the product of the diagonal entries indexed by `S`, given as the
+/// tables `pa`, `pb` of [`subset_products`].
+///
+/// Tables `D'(S) = α·β^|S|·D(S)` (`α, β > 0`, rational, the table still
+/// integral) give coefficient `k` of the sum (`λ^k`, `|A∖T| = k`) times
+/// `α·β^k` for A, `α·β^(4−k)` for B: `λA + B` with `A` and `B` scaled,
+/// which rescales λ and keeps every sign Theorem 3.10 reads. Integer
+/// diagonals `D = s·D̃` of long rational `D̃` carry `s^|S|` in `D(S)`, a
+/// factor the products need not carry.
 ///
 /// Proof: `λA + B = Gᵀ·diag(λD_A, D_B)·G` with `G = [M_A^(−1); M_B^(−1)]`
 /// (8×4), so Cauchy–Binet sums `det(G_S)²` times the diagonal over row sets
@@ -202,14 +230,14 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
 ///
 /// ```
 /// use ccd_arith::Int;
-/// use ccd_quadric::{characteristic, congruence, placed_characteristic, Mat4};
+/// use ccd_quadric::{characteristic, congruence, placed_characteristic, subset_products, Mat4};
 /// let i = |v: i64| Int::from(v);
 /// // Unit sphere at the origin; sphere of radius 1 (D = diag(1,1,1,−1)) at x = 3.
 /// let id: Mat4<Int> = std::array::from_fn(|r| std::array::from_fn(|c| i((r == c) as i64)));
 /// let mut shifted = id.clone();
 /// shifted[0][3] = i(3);
 /// let d = [i(1), i(1), i(1), i(-1)];
-/// let f = placed_characteristic(&id, &d, &shifted, &d);
+/// let f = placed_characteristic(&id, &subset_products(&d), &shifted, &subset_products(&d));
 /// // Inverse placements give the quadrics directly: same quartic (det M = 1).
 /// let mut back = id.clone();
 /// back[0][3] = i(-3);
@@ -217,9 +245,9 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
 /// ```
 pub fn placed_characteristic<R: RingOps>(
     ma: &Mat4<R>,
-    da: &[R; 4],
+    pa: &[R; 16],
     mb: &Mat4<R>,
-    db: &[R; 4],
+    pb: &[R; 16],
 ) -> [R; 5] {
     // Column c of [M_A | M_B] (c < 4 from A).
     let entry = |r: usize, c: usize| if c < 4 { &ma[r][c] } else { &mb[r][c - 4] };
@@ -244,17 +272,6 @@ pub fn placed_characteristic<R: RingOps>(
             bottom[i][j] = minor(2);
         }
     }
-    // D_A(A∖T)·D_B(B∖T) from the products of the diagonal entries over each
-    // subset of one body's four columns (bit c of the mask: column c).
-    let subset_products = |d: &[R; 4]| -> Vec<R> {
-        let mut p = vec![R::one()];
-        for (c, dc) in d.iter().enumerate() {
-            let more: Vec<R> = p[..1 << c].iter().map(|x| x.times(dc)).collect();
-            p.extend(more);
-        }
-        p
-    };
-    let (pa, pb) = (subset_products(da), subset_products(db));
     let mut coeffs: [R; 5] = std::array::from_fn(|_| R::zero());
     // Grouped by A's columns outside T (`outside_a`, whose product `pa`
     // multiplies the inner sum once): 70 products by `pb` and 16 by `pa`
@@ -359,7 +376,7 @@ mod tests {
             let (sa, sb) = (det4(&ma), det4(&mb));
             prop_assume!(!sa.is_zero() && !sb.is_zero());
             let d = |v: &[i64]| -> [Int; 4] { std::array::from_fn(|k| Int::from(v[k])) };
-            let plucker = placed_characteristic(&ma, &d(&da), &mb, &d(&db));
+            let plucker = placed_characteristic(&ma, &subset_products(&d(&da)), &mb, &subset_products(&d(&db)));
             let adjugate = characteristic(&congruence(&adj4(&ma), &d(&da)), &congruence(&adj4(&mb), &d(&db)));
             // Coefficient of λ^k: adjugate = det(M_B)^8·(sa²/sb²)^k·plucker_k/(sa²sb²),
             // i.e. adjugate_k·sa²·sb^(2k+2) = sb^8·sa^(2k)·plucker_k.
