@@ -97,6 +97,12 @@ impl Possible {
             Configuration::Overlap => self.overlap = true,
         }
     }
+    /// Only `c` is possible.
+    pub fn only(c: Configuration) -> Possible {
+        let mut p = Possible::default();
+        p.insert(c);
+        p
+    }
     /// The configuration when it is the only possible one.
     pub fn single(self) -> Option<Configuration> {
         match (self.separate, self.touch, self.overlap) {

@@ -120,6 +120,13 @@ pub trait Oracle {
     /// closure that is not a root (exact signs decide any non-root; an
     /// enclosure next to a root does not).
     const SAMPLE_AT_ENDS: bool = false;
+    /// The level of [`Oracle::signs`] before which the touch test at an
+    /// isolated root tries its other certificates (the states on both
+    /// sides, [`Oracle::interiors_meet`]; `crate::run`): `Some` only
+    /// where a [`Found::Root`] holds exactly one root of the candidate
+    /// polynomial and samples are classified exactly, so that the levels
+    /// before it are the cheap ones.
+    const CERTIFICATES_BEFORE_LEVEL: Option<usize> = None;
 
     /// The parameter interval `[lo, hi]` of the span.
     fn domain(&self) -> &[Rat; 2];
@@ -147,6 +154,12 @@ pub trait Oracle {
     /// subdivided).
     fn split(&self, _cluster: &Self::Root, _q: Quantity) -> Option<Vec<Found<Self::Root>>> {
         None
+    }
+    /// Whether the bodies' interiors provably meet at every instant of the
+    /// root's enclosure (a point of both throughout), which rules out an
+    /// external touch there; the default knows none.
+    fn interiors_meet(&self, _r: &Self::Root) -> bool {
+        false
     }
     /// The root's enclosure narrowed to the query's width, as an instant
     /// (`certified` when its enclosure is proven to hold one root).

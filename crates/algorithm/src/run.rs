@@ -3,7 +3,7 @@
 //! candidates.
 
 use crate::assemble::{assemble, Break, Walk};
-use crate::decide::possible_with;
+use crate::decide::{possible_with, Possible};
 use crate::oracle::{At, Decided, Found, Oracle, Vanishing};
 use crate::{CcdError, Item, Options};
 use ccd_arith::Rat;
@@ -36,16 +36,54 @@ pub fn state_at<O: Oracle>(o: &O, x: &Rat) -> Decided {
 
 /// Theorem 3.10(2) at the candidate `r`, a root of the quantities `zeros`:
 /// which configurations its signs allow, through the oracle's levels until
-/// a touch is ruled out or decided.
-fn touch_at<O: Oracle>(o: &O, r: &mut O::Root, zeros: &[Quantity]) -> crate::Possible {
-    let mut p = crate::Possible::default();
+/// a touch is ruled out or decided. At an `isolated` root, before level
+/// [`Oracle::CERTIFICATES_BEFORE_LEVEL`], the certificates of
+/// [`other_certificates`] first.
+fn touch_at<O: Oracle>(o: &O, r: &mut O::Root, zeros: &[Quantity], isolated: bool) -> Possible {
+    let mut p = Possible::default();
     for level in 0..O::LEVELS {
+        if isolated && O::CERTIFICATES_BEFORE_LEVEL == Some(level) {
+            if let Some(c) = other_certificates(o, r) {
+                return Possible::only(c);
+            }
+        }
         p = possible_with(&mut *o.signs(At::Root(r), level), zeros, true);
         if !p.touch || p.single().is_some() {
             break;
         }
     }
     p
+}
+
+/// The configuration at an isolated root `α` of the candidates without
+/// its signs, when one of two certificates proves it:
+/// * the states at the ends `lo < α < hi` of its enclosure, read at those
+///   samples: the state is constant between consecutive candidates
+///   (Theorem 5.1), and separate (disjoint closed bodies) and overlapping
+///   (interiors meeting) are both open conditions in time, so separate on
+///   one side and overlapping on the other make `α` neither: an external
+///   touch;
+/// * overlapping on both sides, and a point of both interiors throughout
+///   the enclosure ([`Oracle::interiors_meet`]): overlapping at `α`.
+///
+/// `None` otherwise (separate on both sides: a grazing touch is possible,
+/// which only the signs decide).
+fn other_certificates<O: Oracle>(o: &O, r: &O::Root) -> Option<Configuration> {
+    let (lo, hi) = o.ends(r);
+    if lo >= hi {
+        return None;
+    }
+    let (before, after) = (state_at(o, &lo), state_at(o, &hi));
+    if !(before.certified && after.certified) {
+        return None;
+    }
+    match (before.state, after.state) {
+        (State::Separate, State::Overlap) | (State::Overlap, State::Separate) => {
+            Some(Configuration::ExternalTouch)
+        }
+        (State::Overlap, State::Overlap) if o.interiors_meet(r) => Some(Configuration::Overlap),
+        _ => None,
+    }
 }
 
 /// Where the contact candidates come from.
@@ -120,13 +158,13 @@ fn walk_candidates<O: Oracle>(
         while let Some((found, may_split)) = pending.pop() {
             match found {
                 Found::Root(mut r) => {
-                    let mut p = touch_at(o, &mut r, zeros);
+                    let mut p = touch_at(o, &mut r, zeros, true);
                     if !p.touch {
                         continue;
                     }
                     let mut instant = o.refine(&mut r, q);
                     if p.single().is_none() {
-                        p = touch_at(o, &mut r, zeros);
+                        p = touch_at(o, &mut r, zeros, true);
                         if !p.touch {
                             continue;
                         }
@@ -135,7 +173,7 @@ fn walk_candidates<O: Oracle>(
                     out.push(Break::Contact(instant, Some(r)), d0, d1);
                 }
                 Found::Cluster(mut r) => {
-                    if !touch_at(o, &mut r, zeros).touch {
+                    if !touch_at(o, &mut r, zeros, false).touch {
                         // No touch is possible anywhere in it.
                         continue;
                     }
@@ -283,4 +321,159 @@ pub fn run<O: Oracle>(mut o: O, opts: &Options) -> Result<Outcome, CcdError> {
     o.stats(&mut stats);
     outcome.stats = stats;
     Ok(outcome)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::decide::{SignSet, Signs, VarSet};
+    use crate::oracle::Candidates;
+    use ccd_classify::{classify, SignData};
+    use ccd_timeline::{Geometry, Path};
+    use std::cell::Cell;
+
+    /// Signs of a state off every root: a combination Theorem 3.10
+    /// classifies as `c`, with `sr0 ≠ 0`.
+    struct Off(SignData);
+    impl Signs for Off {
+        fn sign(&mut self, q: Quantity) -> SignSet {
+            let s = &self.0;
+            SignSet::exactly(match q {
+                Quantity::Sr22 => s.sr22,
+                Quantity::Sr20 => s.sr20,
+                Quantity::Sr11 => s.sr11,
+                Quantity::Sr10 => s.sr10,
+                Quantity::Sr0 => s.sr0,
+                Quantity::Var => unreachable!("read through variations"),
+            })
+        }
+        fn variations(&mut self) -> VarSet {
+            VarSet::exactly(self.0.var)
+        }
+    }
+
+    /// Signs at the root that no level decides.
+    struct Unknown;
+    impl Signs for Unknown {
+        fn sign(&mut self, _q: Quantity) -> SignSet {
+            SignSet::ANY
+        }
+        fn variations(&mut self) -> VarSet {
+            VarSet::exactly(0)
+        }
+    }
+
+    fn signs_of(c: Configuration) -> SignData {
+        let s = [-1, 0, 1];
+        for (a, b, d, e, v) in
+            (0..3 * 3 * 3 * 3 * 5).map(|i| (i % 3, i / 3 % 3, i / 9 % 3, i / 27 % 3, i / 81))
+        {
+            for sr0 in [-1, 1] {
+                let data = SignData {
+                    sr22: s[a],
+                    sr20: s[b],
+                    sr11: s[d],
+                    sr10: s[e],
+                    sr0,
+                    var: v,
+                };
+                if classify(&data) == c {
+                    return data;
+                }
+            }
+        }
+        unreachable!("every configuration off a root has its signs")
+    }
+
+    /// One isolated root in `[1/4, 3/4]`: `before` left of it, `after`
+    /// right of it, the root's own signs never decided.
+    struct Staged {
+        domain: [Rat; 2],
+        before: Configuration,
+        after: Configuration,
+        meet: bool,
+        witness_asked: Cell<bool>,
+    }
+
+    impl Oracle for Staged {
+        type Root = ();
+        const PATH: Path = Path::Exact;
+        const LEVELS: usize = 2;
+        const CERTIFICATES_BEFORE_LEVEL: Option<usize> = Some(1);
+        fn domain(&self) -> &[Rat; 2] {
+            &self.domain
+        }
+        fn time(&self, x: &Rat) -> Rat {
+            x.clone()
+        }
+        fn signs<'s>(&'s self, at: At<'s, ()>, _level: usize) -> Box<dyn Signs + 's> {
+            match at {
+                At::Sample(x) if *x < Rat::from_frac(1, 2) => Box::new(Off(signs_of(self.before))),
+                At::Sample(_) => Box::new(Off(signs_of(self.after))),
+                At::Root(()) => Box::new(Unknown),
+            }
+        }
+        fn guess(&self, _x: &Rat) -> State {
+            unreachable!("samples are decided")
+        }
+        fn vanishes(&mut self, _q: Quantity) -> Vanishing {
+            Vanishing::Not(None)
+        }
+        fn candidates(&self, _q: Quantity, _attempt: usize) -> Option<Candidates<'_, ()>> {
+            None
+        }
+        fn ends(&self, _r: &()) -> (Rat, Rat) {
+            (Rat::from_frac(1, 4), Rat::from_frac(3, 4))
+        }
+        fn interiors_meet(&self, _r: &()) -> bool {
+            self.witness_asked.set(true);
+            self.meet
+        }
+        fn refine(&self, _r: &mut (), _q: Quantity) -> Instant {
+            unreachable!("not refined here")
+        }
+        fn geometry(&self, _r: &mut (), _zeros: &[Quantity], _instant: &Instant) -> Geometry {
+            unreachable!("no geometry here")
+        }
+        fn geometry_at(&self, _x: &Rat, _zeros: &[Quantity]) -> Geometry {
+            unreachable!("no geometry here")
+        }
+        fn touch_between_contacts(&self, _x: &Rat, d: Decided) -> Result<Decided, CcdError> {
+            Ok(d)
+        }
+        fn stats(&self, _stats: &mut Stats) {}
+    }
+
+    /// The states on both sides decide a touch only where they differ;
+    /// overlapping on both sides needs the interior witness; separate on
+    /// both sides (a possible graze) and a cluster are left to the signs.
+    #[test]
+    fn other_certificates_decide_only_what_they_prove() {
+        use Configuration::{ExternalTouch, Overlap, Separate};
+        let at = |before, after, meet, isolated| {
+            let o = Staged {
+                domain: [Rat::zero(), Rat::one()],
+                before,
+                after,
+                meet,
+                witness_asked: Cell::new(false),
+            };
+            (
+                touch_at(&o, &mut (), &[Quantity::Sr0], isolated).single(),
+                o.witness_asked.get(),
+            )
+        };
+        assert_eq!(
+            at(Separate, Overlap, false, true),
+            (Some(ExternalTouch), false)
+        );
+        assert_eq!(
+            at(Overlap, Separate, false, true),
+            (Some(ExternalTouch), false)
+        );
+        assert_eq!(at(Overlap, Overlap, true, true), (Some(Overlap), true));
+        assert_eq!(at(Overlap, Overlap, false, true), (None, true));
+        assert_eq!(at(Separate, Separate, true, true), (None, false));
+        assert_eq!(at(Separate, Overlap, true, false), (None, false));
+    }
 }

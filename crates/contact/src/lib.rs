@@ -713,7 +713,7 @@ pub fn failed(e: ContactError) -> Geometry {
 mod tests;
 
 pub mod least_point;
-pub use least_point::least_point;
+pub use least_point::{interiors_meet, least_point};
 
 /// `f64` intervals for the contact formulas without subnormal ends.
 ///

@@ -63,6 +63,13 @@ pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), C
     Ok((f, inv))
 }
 
+/// The narrowing, in bits of the parameter, within which the signs at a
+/// root are tried before the other certificates of the touch test (the
+/// states on both sides, a point of both interiors): the signs at the
+/// roots of every shipped scene but one are decided on enclosures of at
+/// most 73 bits; `ratio-needle-k0064-overlap`'s need 1,075–1,093.
+const CHEAP_SIGN_BITS: i64 = 128;
+
 /// A candidate of the exact path: a real root of `sr0` (or `sr11`) with
 /// exact rational bounds — from the filter (its model is `sr0`'s closed
 /// form over `f`'s coefficients) or from the exact isolation of the formed
@@ -108,15 +115,30 @@ impl ExactRoot {
     fn ends(&self) -> (Rat, Rat) {
         each!(&self.isolation, r => (r.lo().clone(), r.hi().clone()))
     }
-    /// The sign of `q` at the root ([`RealRoot::sign_with`]), proven once.
-    fn sign(&mut self, q: Quantity, coefficients: &Rc<Coefficients>) -> i32 {
+    /// The sign of `q` at the root ([`RealRoot::sign_within`]: `None`
+    /// where it is not decided on an enclosure of `2^−max_bits`), proven
+    /// once.
+    fn sign(
+        &mut self,
+        q: Quantity,
+        coefficients: &Rc<Coefficients>,
+        max_bits: Option<i64>,
+    ) -> Option<i32> {
         if let Some(&(_, s)) = self.known.iter().find(|(k, _)| *k == q) {
-            return s;
+            return Some(s);
         }
         let m = model(coefficients, q);
-        let s = each!(&mut self.isolation, r => r.sign_with(&m));
+        let s = each!(&mut self.isolation, r => r.sign_within(&m, max_bits))?;
         self.known.push((q, s));
-        s
+        Some(s)
+    }
+    /// Whether `q` vanishes at the root: its sign when known, else the
+    /// zero test alone ([`RealRoot::vanishes_with`]).
+    fn vanishes(&self, q: Quantity, coefficients: &Rc<Coefficients>) -> bool {
+        match self.known.iter().find(|(k, _)| *k == q) {
+            Some(&(_, s)) => s == 0,
+            None => each!(&self.isolation, r => r.vanishes_with(&model(coefficients, q))),
+        }
     }
 }
 
@@ -312,12 +334,16 @@ impl Signs for SampleSigns<'_, '_> {
     }
 }
 
-/// Exact signs at an algebraic root ([`RealRoot::sign_with`]).
-struct RootSigns<'a>(&'a mut ExactRoot, &'a Rc<Coefficients>);
+/// Exact signs at an algebraic root ([`RealRoot::sign_within`]), within
+/// a bound on the root's narrowing (`None`: none); a sign not decided
+/// within it reads as unknown.
+struct RootSigns<'a>(&'a mut ExactRoot, &'a Rc<Coefficients>, Option<i64>);
 
 impl Signs for RootSigns<'_> {
     fn sign(&mut self, q: Quantity) -> SignSet {
-        SignSet::exactly(self.0.sign(q, self.1))
+        self.0
+            .sign(q, self.1, self.2)
+            .map_or(SignSet::ANY, SignSet::exactly)
     }
     /// Never asked: the touch test stops before `Var`.
     fn variations(&mut self) -> VarSet {
@@ -371,6 +397,10 @@ impl Oracle for Exact<'_> {
     type Root = ExactRoot;
     const PATH: Path = Path::Exact;
     const SAMPLE_AT_ENDS: bool = true;
+    /// Level 0: the signs at a root within `CHEAP_SIGN_BITS` (128); level 1:
+    /// without a bound, after the other certificates.
+    const LEVELS: usize = 2;
+    const CERTIFICATES_BEFORE_LEVEL: Option<usize> = Some(1);
 
     fn domain(&self) -> &[Rat; 2] {
         &self.unit
@@ -381,10 +411,13 @@ impl Oracle for Exact<'_> {
         ccd_algorithm::time_on(&self.scene.span, u)
     }
 
-    fn signs<'a>(&'a self, at: At<'a, ExactRoot>, _level: usize) -> Box<dyn Signs + 'a> {
+    fn signs<'a>(&'a self, at: At<'a, ExactRoot>, level: usize) -> Box<dyn Signs + 'a> {
         match at {
             At::Sample(u) => Box::new(SampleSigns(self, u.clone())),
-            At::Root(r) => Box::new(RootSigns(r, self.coefficients())),
+            At::Root(r) => {
+                let bound = (level == 0).then_some(CHEAP_SIGN_BITS);
+                Box::new(RootSigns(r, self.coefficients(), bound))
+            }
         }
     }
 
@@ -493,6 +526,16 @@ impl Oracle for Exact<'_> {
         r.ends()
     }
 
+    /// A point of both interiors throughout the root's enclosure, in
+    /// time ([`ccd_contact::interiors_meet`], in `f64` intervals).
+    fn interiors_meet(&self, r: &ExactRoot) -> bool {
+        let (lo, hi) = r.ends();
+        let (lo, hi) = (self.time(&lo), self.time(&hi));
+        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        let bodies = (&self.scene.a, &self.scene.b, &self.scene.span);
+        ccd_contact::interiors_meet::<Interval>(bodies, (&lo, &hi), 53)
+    }
+
     fn refine(&self, r: &mut ExactRoot, _q: Quantity) -> Instant {
         each!(&mut r.isolation, x => x.refine_to(&self.width));
         let (lo, hi) = r.ends();
@@ -504,13 +547,15 @@ impl Oracle for Exact<'_> {
     }
 
     fn geometry(&self, r: &mut ExactRoot, zeros: &[Quantity], _instant: &Instant) -> Geometry {
-        // The case of Theorem 3.10(2): the sign of sr11 at the root, which
-        // the touch test has proven already.
-        let sr11 =
-            (!zeros.contains(&Quantity::Sr11)).then(|| r.sign(Quantity::Sr11, self.coefficients()));
-        let case = match sr11 {
-            Some(s) if s != 0 => Case::Simple,
-            _ => Case::TwoDouble,
+        // The case of Theorem 3.10(2): whether sr11 vanishes at the root —
+        // its sign when the touch test proved it, else the zero test alone
+        // (a touch proven by the states on both sides).
+        let simple =
+            !zeros.contains(&Quantity::Sr11) && !r.vanishes(Quantity::Sr11, self.coefficients());
+        let case = if simple {
+            Case::Simple
+        } else {
+            Case::TwoDouble
         };
         each!(&mut r.isolation, x => self.bodies().exact(x, case))
     }

@@ -831,6 +831,30 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// (a round after one cut short asks for the same bits again).
     /// docs/termination.md says why this ends.
     pub fn sign_with(&mut self, model: &impl SignModel) -> i32 {
+        self.sign_within(model, None)
+            .expect("an unbounded sign decides")
+    }
+
+    /// Whether `q(α) = 0`, decided as [`RealRoot::sign_with`] decides
+    /// zero (one image modulo a word prime, else `gcd(p, q)`'s sign change
+    /// over the enclosure), without the sign: where `q(α)` is tiny its
+    /// sign may need a long narrowing, its zero test does not.
+    pub fn vanishes_with(&self, model: &impl SignModel) -> bool {
+        if self.sign_lo == 0 {
+            return model.sign_at(&self.lo) == 0;
+        }
+        if self.coprime_by_images(model) {
+            return false;
+        }
+        let g = self.base.exact().gcd(model.exact());
+        g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0
+    }
+
+    /// [`RealRoot::sign_with`] within a bound: `None` once the sign has
+    /// not been decided on an enclosure narrowed to `2^−max_bits` (of the
+    /// parameter), where it would narrow further. The narrowing done is
+    /// kept; a later call starts its rounds over.
+    pub fn sign_within(&mut self, model: &impl SignModel, max_bits: Option<i64>) -> Option<i32> {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         // Once `q(α) ≠ 0` is proven (`q` itself is formed only if the
         // Bernstein test below runs, or for a gcd the images cannot prove).
@@ -843,11 +867,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let mut near: Option<Option<Local>> = None;
         for round in 0u32.. {
             if self.sign_lo == 0 {
-                return model.sign_at(&self.lo);
+                return Some(model.sign_at(&self.lo));
             }
             let whole = self.enclosure();
             if let Some(s) = decided(model.enclose(whole)) {
-                return s;
+                return Some(s);
             }
             let m = Rat::dyadic_in(&self.lo, &self.hi);
             let second = model.enclose_second(whole);
@@ -863,7 +887,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                         .and_then(|jet| self.ball_round(&m, &jet, second))
                 });
             let value_zero = match ball {
-                Some(BallRound::Sign(s)) => return s,
+                Some(BallRound::Sign(s)) => return Some(s),
                 Some(BallRound::Open {
                     value_zero: Some(zero),
                 }) => zero,
@@ -874,24 +898,20 @@ impl<M: SignModel + Clone> RealRoot<M> {
                     let (qm, dqm) = jet.enclose();
                     let (ol, oh) = self.offsets(&m);
                     if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
-                        return s;
+                        return Some(s);
                     }
                     // The same Taylor form with its linear part kept exact:
                     // no underflow however small `q(α)` is beside `q`'s
                     // coefficients.
                     if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
-                        return s;
+                        return Some(s);
                     }
                     qm.contains_zero()
                 }
             };
             if !nonzero && (round >= 1 || value_zero) {
-                if !self.coprime_by_images(model) {
-                    let g = self.base.exact().gcd(model.exact());
-                    if g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0
-                    {
-                        return 0;
-                    }
+                if self.vanishes_with(model) {
+                    return Some(0);
                 }
                 nonzero = true;
             }
@@ -924,7 +944,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                     if let Some(l) = local {
                         let ladder = cost.sign_ladder(&self.lo);
                         if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
-                            return s;
+                            return Some(s);
                         }
                         // A root of q in I: the test cannot decide.
                         skip = l.changes_sign(&self.lo, &self.hi, ladder);
@@ -932,7 +952,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
                 }
                 if !skip {
                     if let Some(s) = descartes_sign(q, &self.lo, &self.hi, &width) {
-                        return s;
+                        return Some(s);
                     }
                 }
             }
@@ -941,6 +961,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // double the bits anyway), so the rounds needed grow with the
             // logarithm of the bits that `q(α) ≠ 0` takes to show. A
             // narrowing cut short keeps the gain: its bits came slower.
+            if max_bits.is_some_and(|bits| neg_log2(&width) >= bits) {
+                return None;
+            }
             let gain = 16i64 << reached.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
             let w = width.mul_pow2(-gain);
             if self.narrow_to(&w, SIGN_NARROW_STEPS) {
