@@ -121,17 +121,21 @@ impl CharPoly {
             })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
-            let [da, db] = [a, b].map(|body| body.diagonal_products().map(ZPoly::constant));
             worth_small(sizes(&[&pa, &pb]), 8)
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
-                    let [dx, dy] = [&da, &db].map(|d| d.each_ref().map(SmallPoly::lowered));
+                    let [dx, dy] = [a, b].map(|body| {
+                        body.diagonal_products::<SmallInt>()
+                            .map(|d| SmallPoly::constant(&d))
+                    });
                     exact(placed_characteristic(&x, &dx, &y, &dy))
                 })
                 .flatten()
                 .map_or_else(
                     || {
                         let (pa, pb) = without_row_contents(pa, pb);
+                        let [da, db] =
+                            [a, b].map(|body| body.diagonal_products::<Int>().map(ZPoly::constant));
                         Quartic::Exact(placed_characteristic(&pa, &da, &pb, &db))
                     },
                     Quartic::Small,
@@ -370,7 +374,7 @@ fn without_row_contents(mut pa: Mat4<ZPoly>, mut pb: Mat4<ZPoly>) -> (Mat4<ZPoly
 fn inverse_characteristic(a: &PlacedQuadric, b: &PlacedQuadric) -> [ZPoly; 5] {
     let (ta, tb) = without_row_contents(transposed(a.inverse()), transposed(b.inverse()));
     let [pa, pb] = [a, b].map(|body| {
-        let d = body.diagonal_products();
+        let d = body.diagonal_products::<Int>();
         std::array::from_fn(|s| ZPoly::constant(d[!s & 0xf].clone()))
     });
     let mut f = placed_characteristic(&ta, &pa, &tb, &pb);

@@ -337,12 +337,17 @@ impl PlacedQuadric {
     /// cannot take out when the `nᵢ` are long primes
     /// (`bench-perturbed-affine-deg2-d0100`: 100-digit radii, `f` of 6,700
     /// bits per coefficient after normalisation, 4,030 without it).
-    pub fn diagonal_products(&self) -> [Int; 16] {
-        let squares =
-            |part: fn(&Rat) -> &Int| self.radii.each_ref().map(|r| part(r).times(part(r)));
+    /// Over `I` (an `i128` overflow marks the entries, as everywhere).
+    pub(crate) fn diagonal_products<I: Integer>(&self) -> [I; 16] {
+        let squares = |part: fn(&Rat) -> &Int| {
+            self.radii.each_ref().map(|r| {
+                let x = I::of(part(r));
+                x.times(&x)
+            })
+        };
         let (n, d) = (squares(Rat::numer), squares(Rat::denom));
-        let body: [Int; 8] = std::array::from_fn(|s| {
-            (0..3).fold(Int::one(), |p, i| {
+        let body: [I; 8] = std::array::from_fn(|s| {
+            (0..3).fold(I::one(), |p, i| {
                 p.times(if s >> i & 1 == 1 { &d[i] } else { &n[i] })
             })
         });
@@ -751,7 +756,7 @@ mod tests {
             let scale = r.iter().fold(Rat::one(), |p, x| &p * &Rat::from(x.numer() * x.numer()));
             let [d0, d1, d2] = r.each_ref().map(|x| &Rat::one() / &(x * x));
             let expected = ccd_quadric::subset_products(&[d0, d1, d2, Rat::from(-1)]).map(|p| &p * &scale);
-            proptest::prop_assert_eq!(placed.diagonal_products().map(Rat::from), expected);
+            proptest::prop_assert_eq!(placed.diagonal_products::<Int>().map(Rat::from), expected);
         }
 
         /// The integer body diagonal is `body_diagonal` over ℚ times the
