@@ -123,9 +123,11 @@ pub trait Oracle {
     /// The level of [`Oracle::signs`] before which the touch test at an
     /// isolated root tries its other certificates (the states on both
     /// sides, [`Oracle::interiors_meet`]; `crate::run`): `Some` only
-    /// where a [`Found::Root`] holds exactly one root of the candidate
-    /// polynomial and samples are classified exactly, so that the levels
-    /// before it are the cheap ones.
+    /// where every [`Found::Root`] (from a stream or from
+    /// [`Oracle::split`]) holds exactly one root of the candidate
+    /// polynomial in its enclosure `[lo, hi]`, with `lo` and `hi` not roots
+    /// unless `lo = hi`, and samples are classified exactly; the levels
+    /// before it should be the cheap ones.
     const CERTIFICATES_BEFORE_LEVEL: Option<usize> = None;
 
     /// The parameter interval `[lo, hi]` of the span.
@@ -156,8 +158,8 @@ pub trait Oracle {
         None
     }
     /// Whether the bodies' interiors provably meet at every instant of the
-    /// root's enclosure (a point of both throughout), which rules out an
-    /// external touch there; the default knows none.
+    /// root's enclosure (at each instant, a point of both interiors), which
+    /// rules out an external touch there; the default knows none.
     fn interiors_meet(&self, _r: &Self::Root) -> bool {
         false
     }

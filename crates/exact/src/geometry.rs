@@ -139,7 +139,7 @@ impl<'a> Bodies<'a> {
 
     /// The certified geometry at the contact `root` (an isolated external
     /// touch) in the `case` of Theorem 3.10(2) that holds there (decided
-    /// exactly by the caller: the sign of `sr11` at the root): interval
+    /// exactly by the caller: whether `sr11` vanishes at the root): interval
     /// evaluation of the closed forms at increasing precision, each stage
     /// followed by [`Bodies::least_point`], and, while
     /// the box is wider than the goal, a narrower enclosure of the instant

@@ -63,11 +63,13 @@ pub fn symbolic(scene: &Scene) -> Result<(CharPoly, QuarticInvariants<ZPoly>), C
     Ok((f, inv))
 }
 
-/// The narrowing, in bits of the parameter, within which the signs at a
-/// root are tried before the other certificates of the touch test (the
-/// states on both sides, a point of both interiors): the signs at the
-/// roots of every shipped scene but one are decided on enclosures of at
-/// most 73 bits; `ratio-needle-k0064-overlap`'s need 1,075–1,093.
+/// The narrowing, in bits of the parameter, past which the signs at a
+/// root give way to the other certificates of the touch test (the states
+/// on both sides, a point of both interiors; [`RealRoot::sign_within`]
+/// stops once its enclosure is narrower, so the last round may have
+/// narrowed further): the signs at the roots of every stability scene but
+/// one are decided on enclosures of at most 73 bits;
+/// `ratio-needle-k0064-overlap`'s need 1,072–1,093.
 const CHEAP_SIGN_BITS: i64 = 128;
 
 /// A candidate of the exact path: a real root of `sr0` (or `sr11`) with
@@ -77,7 +79,9 @@ const CHEAP_SIGN_BITS: i64 = 128;
 pub struct ExactRoot {
     isolation: Isolation,
     /// Signs proven at the root, each asked once: the touch test asks
-    /// `sr11`, and so does the case of the contact geometry after it.
+    /// `sr11`, and the case of the contact geometry after it reads
+    /// whether `sr11` vanishes from it (or, unknown, from the zero test
+    /// alone).
     known: Vec<(Quantity, i32)>,
 }
 

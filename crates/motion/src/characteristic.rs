@@ -61,11 +61,14 @@ impl CharPoly {
 
     /// `det(λA + B)` of two placed bodies, normalised with the determinant
     /// factors the motions already know (no factorisation of `det A`,
-    /// `det B` needed). Computed through the quadrics `NᵀDN` or, when the
-    /// inverse placements have higher degree than the placements (affine
-    /// motions: `N = adj M`), from the Plücker coordinates of the
-    /// placements ([`placed_characteristic`]: degree 16 instead of 48 for
-    /// degree-2 rational affine motions, before normalisation).
+    /// `det B` needed). Computed through the quadrics `NᵀDN` (for numbers
+    /// past 80 bits, by Cauchy–Binet on the rows of the inverse placements
+    /// instead, with the diagonal products of `diag(1/r², −1)`) or, when
+    /// the inverse
+    /// placements have higher degree than the placements (affine motions:
+    /// `N = adj M`), from the Plücker coordinates of the placements
+    /// ([`placed_characteristic`]: degree 16 instead of 48 for degree-2
+    /// rational affine motions, before normalisation).
     pub fn from_placed(a: &PlacedQuadric, b: &PlacedQuadric) -> CharPoly {
         let candidates = a
             .det_factors
@@ -106,10 +109,8 @@ impl CharPoly {
                 _ => None,
             };
             small.map(Quartic::Small).unwrap_or_else(|| {
-                // `A = NᵀDN`: column j of both inverse placements divided by
-                // their common content `s_j` gives `S⁻¹AS⁻¹`, `S⁻¹BS⁻¹`
-                // (`S = diag(s)`), so `f` divided by `det(S)²`, which the
-                // normalisation's content removal takes out anyway.
+                // Long bodies: Cauchy–Binet on the inverse placements, whose
+                // columns lose their contents first.
                 if a.bits().max(b.bits()) > SMALL_BODY_BITS {
                     return Quartic::Exact(inverse_characteristic(a, b));
                 }

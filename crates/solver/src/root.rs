@@ -850,10 +850,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
         g.degree().unwrap_or(0) >= 1 && g.sign_at(&self.lo) * g.sign_at(&self.hi) < 0
     }
 
-    /// [`RealRoot::sign_with`] within a bound: `None` once the sign has
-    /// not been decided on an enclosure narrowed to `2^−max_bits` (of the
-    /// parameter), where it would narrow further. The narrowing done is
-    /// kept; a later call starts its rounds over.
+    /// [`RealRoot::sign_with`] within a bound: `None` when a round ends
+    /// undecided on an enclosure narrower than `2^−max_bits` (of the
+    /// parameter), before it would narrow further (the bound is read
+    /// between rounds, so the last round's narrowing may pass it). The
+    /// narrowing done is kept; a later call starts its rounds over.
     pub fn sign_within(&mut self, model: &impl SignModel, max_bits: Option<i64>) -> Option<i32> {
         let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
         // Once `q(α) ≠ 0` is proven (`q` itself is formed only if the

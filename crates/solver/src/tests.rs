@@ -933,3 +933,44 @@ fn image_proof_needs_the_kept_degree() {
     assert_eq!(roots[0].sign_of(&q), 0);
     assert_ne!(roots[1].sign_of(&q), 0);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+    /// `RealRoot::sign_within` gives the unbounded sign or `None`, and
+    /// `None` only once its enclosure is narrower than the bound;
+    /// `RealRoot::vanishes_with` is `sign_with(..) == 0`. The roots: `1/3`,
+    /// `1/3 + 2^(−gap)` and `1/2` (exact: `lo = hi`); the quantities: lines
+    /// through points `2^(−off)` on either side of the root, through the
+    /// root, and through the root's neighbour.
+    #[test]
+    fn bounded_signs_and_zero_tests_agree_with_the_signs(
+        gap in 20u64..300,
+        off in 1u64..300,
+        k in 0usize..3,
+        bound in 8i64..200,
+    ) {
+        let a = Rat::from_frac(1, 3);
+        let roots = [a.clone(), &a + &pow2(gap), Rat::from_frac(1, 2)];
+        let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
+        let found = all_roots(&p, &Rat::zero(), &Rat::one());
+        prop_assert_eq!(found.len(), 3);
+        let alpha = &roots[k];
+        let neighbour = &roots[(k + 1) % 3];
+        for q in [
+            linear(&(alpha + &pow2(off))),
+            linear(&(alpha - &pow2(off))),
+            linear(alpha),
+            &linear(neighbour) * &linear(&Rat::from(3)),
+        ] {
+            let model = crate::SignProbe::new(&q);
+            let exact = found[k].clone().sign_with(&model);
+            let mut bounded = found[k].clone();
+            match bounded.sign_within(&model, Some(bound)) {
+                Some(s) => prop_assert_eq!(s, exact),
+                None => prop_assert!(bounded.width() < pow2(bound as u64), "{bound}"),
+            }
+            prop_assert!(bounded.lo() <= alpha && alpha <= bounded.hi());
+            prop_assert_eq!(found[k].vanishes_with(&model), exact == 0);
+        }
+    }
+}
