@@ -962,7 +962,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // double the bits anyway), so the rounds needed grow with the
             // logarithm of the bits that `q(α) ≠ 0` takes to show. A
             // narrowing cut short keeps the gain: its bits came slower.
-            if max_bits.is_some_and(|bits| neg_log2(&width) >= bits) {
+            if max_bits.is_some_and(|bits| width.mul_pow2(bits) < Rat::one()) {
                 return None;
             }
             let gain = 16i64 << reached.saturating_sub(EXACT_SIGN_ROUND - 1).min(40);
