@@ -806,3 +806,115 @@ mod tests {
         }
     }
 }
+
+/// Algorithm 1 with the touch test's other certificates (the states on
+/// both sides, the interior witness) against the signs alone, on every
+/// stability scene: the same answers.
+#[cfg(test)]
+mod certificates {
+    use super::{Exact, ExactRoot};
+    use ccd_algorithm::{
+        At, Candidates, CcdError, Decided, Item, Options, Oracle, Signs, Vanishing,
+    };
+    use ccd_arith::Rat;
+    use ccd_scene::Scene;
+    use ccd_subres::Quantity;
+    use ccd_timeline::{Geometry, Instant, Outcome, Path, State, Stats};
+
+    /// The exact oracle whose roots are decided by their signs alone.
+    struct SignsOnly<'s>(Exact<'s>);
+
+    impl Oracle for SignsOnly<'_> {
+        type Root = ExactRoot;
+        const PATH: Path = Path::Exact;
+        const SAMPLE_AT_ENDS: bool = true;
+        const LEVELS: usize = 2;
+
+        fn domain(&self) -> &[Rat; 2] {
+            self.0.domain()
+        }
+        fn time(&self, x: &Rat) -> Rat {
+            self.0.time(x)
+        }
+        fn signs<'a>(&'a self, at: At<'a, ExactRoot>, level: usize) -> Box<dyn Signs + 'a> {
+            self.0.signs(at, level)
+        }
+        fn guess(&self, x: &Rat) -> State {
+            self.0.guess(x)
+        }
+        fn prepare(&mut self) -> Result<(), CcdError> {
+            self.0.prepare()
+        }
+        fn vanishes(&mut self, q: Quantity) -> Vanishing {
+            Oracle::vanishes(&mut self.0, q)
+        }
+        fn candidates(&self, q: Quantity, attempt: usize) -> Option<Candidates<'_, ExactRoot>> {
+            self.0.candidates(q, attempt)
+        }
+        fn ends(&self, r: &ExactRoot) -> (Rat, Rat) {
+            Oracle::ends(&self.0, r)
+        }
+        fn refine(&self, r: &mut ExactRoot, q: Quantity) -> Instant {
+            self.0.refine(r, q)
+        }
+        fn geometry(&self, r: &mut ExactRoot, zeros: &[Quantity], instant: &Instant) -> Geometry {
+            self.0.geometry(r, zeros, instant)
+        }
+        fn geometry_at(&self, x: &Rat, zeros: &[Quantity]) -> Geometry {
+            self.0.geometry_at(x, zeros)
+        }
+        fn touch_between_contacts(&self, x: &Rat, d: Decided) -> Result<Decided, CcdError> {
+            self.0.touch_between_contacts(x, d)
+        }
+        fn settle(&self, items: Vec<Item>) -> Vec<Item> {
+            self.0.settle(items)
+        }
+        fn stats(&self, stats: &mut Stats) {
+            self.0.stats(stats)
+        }
+    }
+
+    /// Two enclosures of the same instant meet.
+    fn meet(a: &Instant, b: &Instant) -> bool {
+        a.lo <= b.hi && b.lo <= a.hi
+    }
+
+    fn same_answer(x: &Outcome, y: &Outcome) -> bool {
+        x.collision_free == y.collision_free
+            && x.contacts.len() == y.contacts.len()
+            && x.contacts.iter().zip(&y.contacts).all(|(a, b)| meet(a, b))
+            && x.timeline.len() == y.timeline.len()
+            && x.timeline.iter().zip(&y.timeline).all(|(a, b)| {
+                a.state == b.state && meet(&a.start, &b.start) && meet(&a.end, &b.end)
+            })
+    }
+
+    #[test]
+    fn the_certificates_change_no_answer() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/stability");
+        let mut scenes: Vec<_> = std::fs::read_dir(dir)
+            .expect("the stability scenes")
+            .map(|e| e.expect("an entry").path())
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .collect();
+        scenes.sort();
+        assert!(scenes.len() >= 100, "{}", scenes.len());
+        let opts = Options {
+            first_contact_only: false,
+            ..Options::default()
+        };
+        for path in &scenes {
+            let text = std::fs::read_to_string(path).expect("a scene");
+            let scene = Scene::from_toml(&text).expect("a pair scene");
+            let with = ccd_algorithm::run(Exact::new(&scene, opts.digits).expect("valid"), &opts);
+            let without = ccd_algorithm::run(
+                SignsOnly(Exact::new(&scene, opts.digits).expect("valid")),
+                &opts,
+            );
+            match (with, without) {
+                (Ok(x), Ok(y)) => assert!(same_answer(&x, &y), "{}", path.display()),
+                (x, y) => assert_eq!(x.is_ok(), y.is_ok(), "{}", path.display()),
+            }
+        }
+    }
+}
