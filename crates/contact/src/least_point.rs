@@ -45,7 +45,7 @@
 //! ([`least_on_sphere`]).
 
 use crate::{
-    either_normal, krawczyk_image, times_point, try_array, ContactError, Enclosed, Scalar,
+    either_normal, krawczyk_image, times_point, try_array, try_map, ContactError, Enclosed, Scalar,
 };
 use ccd_arith::Rat;
 use ccd_enclosure::{quadric_at, unit_frame, Real, Trig};
@@ -71,30 +71,44 @@ pub fn least_point<N: Scalar + Real + Trig>(
     let fail = ContactError::Undecided("the least point on A");
     let time = outward_time::<N>((lo, hi), prec);
     let frame = unit_frame::<N>(a, b, span, &time, prec);
-    // B's quadric scaled by a power of two to entries ≤ 1 (a positive
-    // factor: the same minimiser).
-    let top = frame
-        .quadric_b
-        .iter()
-        .flatten()
-        .map(|x| Real::approx(x).abs())
-        .fold(0.0, f64::max);
-    if !(top.is_finite() && top > 0.0) {
-        return Err(fail);
-    }
-    let scale = <N as Real>::constant(&Rat::one().mul_pow2(-(top.log2().ceil() as i64)), prec);
-    let q: Mat4<N> = frame
-        .quadric_b
-        .each_ref()
-        .map(|row| row.each_ref().map(|x| x.times(&scale)));
-    let approx = |i: usize, j: usize| Real::approx(&q[i][j]);
-    let h: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| approx(i, j)));
-    let g: [f64; 3] = std::array::from_fn(|i| approx(i, 3));
+    let Scaled { q, h, g } = scaled(&frame.quadric_b, prec).ok_or(fail.clone())?;
     let (s, nu) = least_on_sphere(&h, &g).ok_or(fail.clone())?;
     let point = |v: f64| N::of_f64(v, &time).ok_or(fail.clone());
     let guess: [N; 4] = [point(s[0])?, point(s[1])?, point(s[2])?, point(nu)?];
     let z = proven_minimiser(&q, &guess, prec)?;
     enclosed((a, b, span), &time, &frame, &z, prec)
+}
+
+/// B's quadric in A's frame scaled by a power of two to entries ≤ 1 (a
+/// positive factor: the same minimiser, the same signs), with its `f64`
+/// parts.
+struct Scaled<N> {
+    q: Mat4<N>,
+    /// Rows and columns 0..2.
+    h: [[f64; 3]; 3],
+    /// Column 3, rows 0..2.
+    g: [f64; 3],
+}
+
+/// [`Scaled`] of B's quadric; `None` when its entries are all zero or not
+/// finite in `f64`.
+fn scaled<N: Scalar + Real>(quadric_b: &Mat4<N>, prec: u32) -> Option<Scaled<N>> {
+    let top = quadric_b
+        .iter()
+        .flatten()
+        .map(|x| Real::approx(x).abs())
+        .fold(0.0, f64::max);
+    if !(top.is_finite() && top > 0.0) {
+        return None;
+    }
+    let scale = <N as Real>::constant(&Rat::one().mul_pow2(-(top.log2().ceil() as i64)), prec);
+    let q: Mat4<N> = quadric_b
+        .each_ref()
+        .map(|row| row.each_ref().map(|x| x.times(&scale)));
+    let approx = |i: usize, j: usize| Real::approx(&q[i][j]);
+    let h: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| approx(i, j)));
+    let g: [f64; 3] = std::array::from_fn(|i| approx(i, 3));
+    Some(Scaled { q, h, g })
 }
 
 /// A box of `(s, ν)` proven to hold the one zero of `F(·; t)` for every
@@ -176,20 +190,11 @@ pub fn interiors_meet<N: Scalar + Real + Trig>(
     prec: u32,
 ) -> bool {
     let time = outward_time((lo, hi), prec);
-    let q = unit_frame::<N>(a, b, span, &time, prec).quadric_b;
-    let approx = |i: usize, j: usize| Real::approx(&q[i][j]);
-    let h: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| approx(i, j)));
-    let g: [f64; 3] = std::array::from_fn(|i| approx(i, 3));
-    let top = h
-        .iter()
-        .flatten()
-        .chain(&g)
-        .fold(0.0f64, |m, x| m.max(x.abs()));
-    if !(top.is_finite() && top > 0.0) {
+    let Some(Scaled { q, h, g }) =
+        scaled(&unit_frame::<N>(a, b, span, &time, prec).quadric_b, prec)
+    else {
         return false;
-    }
-    let h = h.map(|row| row.map(|x| x / top));
-    let g = g.map(|x| x / top);
+    };
     let witness = match least_on_sphere(&h, &g) {
         Some((s, _)) => s.map(|x| x * (1.0 - 1.0 / f64::from(1u32 << 20))),
         // B's centre −H⁻¹g inside the ball (or H + μI singular).
@@ -198,16 +203,13 @@ pub fn interiors_meet<N: Scalar + Real + Trig>(
             None => return false,
         },
     };
-    let Some(s) = try_map3(&witness, |v| N::of_f64(v, &time)) else {
+    let Some(s) = try_map(&witness, |&v| N::of_f64(v, &time)) else {
         return false;
     };
-    let hat = [s[0].clone(), s[1].clone(), s[2].clone(), N::one()];
-    let inside = (0..3).fold(N::from_i64(-1), |acc, i| acc.plus(&hat[i].times(&hat[i])));
-    let qs: N = (0..4).fold(N::zero(), |acc, i| {
-        (0..4).fold(acc, |acc, j| {
-            acc.plus(&hat[i].times(&q[i][j]).times(&hat[j]))
-        })
-    });
+    // |s|² − 1 and (s, 1)ᵀ·Q·(s, 1).
+    let inside = (0..3).fold(N::from_i64(-1), |acc, i| acc.plus(&s[i].times(&s[i])));
+    let qx: [N; 4] = times_point(&q, &s);
+    let qs = (0..3).fold(qx[3].clone(), |acc, i| acc.plus(&s[i].times(&qx[i])));
     Real::sign(&inside) == Some(-1) && Real::sign(&qs) == Some(-1)
 }
 
@@ -222,23 +224,31 @@ fn outward_time<N: Real>((lo, hi): (&Rat, &Rat), prec: u32) -> N {
 
 /// `−H⁻¹g` when it lies strictly inside the unit ball.
 fn free_minimum(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<[f64; 3]> {
-    let det = det3(h);
+    solve_shifted(h, 0.0, &g.map(|x| -x)).filter(|c| c.iter().map(|x| x * x).sum::<f64>() < 1.0)
+}
+
+/// `(H + μI)⁻¹·rhs` by Cramer's rule, `None` when `H + μI` is singular
+/// in `f64` or a component is not finite.
+fn solve_shifted(h: &[[f64; 3]; 3], mu: f64, rhs: &[f64; 3]) -> Option<[f64; 3]> {
+    let m: [[f64; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| h[i][j] + if i == j { mu } else { 0.0 }));
+    let det = det3(&m);
     if !(det.is_finite() && det != 0.0) {
         return None;
     }
-    let c: [f64; 3] = std::array::from_fn(|k| {
-        let mut hk = *h;
-        for (row, v) in hk.iter_mut().zip(g) {
-            row[k] = -v;
+    let x: [f64; 3] = std::array::from_fn(|k| {
+        let mut mk = m;
+        for (row, v) in mk.iter_mut().zip(rhs) {
+            row[k] = *v;
         }
-        det3(&hk) / det
+        det3(&mk) / det
     });
-    (c.iter().all(|x| x.is_finite()) && c.iter().map(|x| x * x).sum::<f64>() < 1.0).then_some(c)
+    x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
-/// `f` of each of three values, `None` if any is.
-fn try_map3<T>(v: &[f64; 3], f: impl Fn(f64) -> Option<T>) -> Option<[T; 3]> {
-    Some([f(v[0])?, f(v[1])?, f(v[2])?])
+/// The Euclidean norm.
+fn norm(v: &[f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
 /// The world point and A's outward normal (∞-norm 1) from the proven box
@@ -287,24 +297,7 @@ fn enclosed<N: Scalar + Real + Trig>(
 /// 1983), kept inside a bracket, finds it. `None` when `H + μI` is
 /// singular in `f64` or the centre is not outside.
 pub fn least_on_sphere(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<([f64; 3], f64)> {
-    let solve = |mu: f64, rhs: &[f64; 3]| -> Option<[f64; 3]> {
-        let m: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| h[i][j] + if i == j { mu } else { 0.0 })
-        });
-        let det = det3(&m);
-        if !(det.is_finite() && det != 0.0) {
-            return None;
-        }
-        let x: [f64; 3] = std::array::from_fn(|k| {
-            let mut mk = m;
-            for (row, v) in mk.iter_mut().zip(rhs) {
-                row[k] = *v;
-            }
-            det3(&mk) / det
-        });
-        x.iter().all(|v| v.is_finite()).then_some(x)
-    };
-    let norm = |v: &[f64; 3]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let solve = |mu: f64, rhs: &[f64; 3]| solve_shifted(h, mu, rhs);
     let minus_g = g.map(|x| -x);
     let outside = solve(0.0, &minus_g).is_none_or(|s| norm(&s) > 1.0);
     if !outside {

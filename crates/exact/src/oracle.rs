@@ -533,9 +533,9 @@ impl Oracle for Exact<'_> {
     /// A point of both interiors throughout the root's enclosure, in
     /// time ([`ccd_contact::interiors_meet`], in `f64` intervals).
     fn interiors_meet(&self, r: &ExactRoot) -> bool {
+        // `t0 < t1` (a scene invariant), so the times keep their order.
         let (lo, hi) = r.ends();
         let (lo, hi) = (self.time(&lo), self.time(&hi));
-        let (lo, hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
         let bodies = (&self.scene.a, &self.scene.b, &self.scene.span);
         ccd_contact::interiors_meet::<Interval>(bodies, (&lo, &hi), 53)
     }
