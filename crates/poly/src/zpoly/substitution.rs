@@ -57,28 +57,38 @@ impl ZPoly {
         let alpha = a.numer() * &d.div_exact(a.denom());
         let beta = b.numer() * &d.div_exact(b.denom());
         let mut v = self.c.clone();
-        if !d.is_one() {
-            // c_j d^(n−j), from the top.
-            let mut dp = Int::one();
-            for x in v[..n].iter_mut().rev() {
-                dp *= &d;
-                *x *= &dp;
-            }
-        }
+        // c_j d^(n−j), from the top.
+        times_successive_powers(v[..n].iter_mut().rev(), &d);
         taylor_shift_in_place(&mut v, &alpha);
-        if !beta.is_one() {
-            let mut bp = Int::one();
-            for x in v[1..].iter_mut() {
-                bp *= &beta;
-                *x *= &bp;
-            }
-        }
+        times_successive_powers(v[1..].iter_mut(), &beta);
         ZPoly::new(v)
     }
     /// `t^n p(1/t)` with `n = deg p`: the coefficients reversed (the degree
     /// drops by the multiplicity of the root `0`).
     pub fn reverse(&self) -> ZPoly {
         ZPoly::new(self.c.iter().rev().cloned().collect())
+    }
+}
+
+/// Multiplies the entries in turn by `x¹, x², …`: shifts where `x` is a
+/// positive power of two (a dyadic substitution's denominators and
+/// widths), else products by the running power; nothing for `x = 1`.
+fn times_successive_powers<'a>(v: impl Iterator<Item = &'a mut Int>, x: &Int) {
+    if x.is_one() {
+        return;
+    }
+    let twos = x
+        .trailing_zeros()
+        .filter(|&k| x.signum() > 0 && k + 1 == x.bits());
+    let mut power = Int::one();
+    for (j, entry) in (1u64..).zip(v) {
+        match twos {
+            Some(k) => *entry = entry.shl(k * j),
+            None => {
+                power *= x;
+                *entry *= &power;
+            }
+        }
     }
 }
 
@@ -103,6 +113,24 @@ mod tests {
             let kappa = &Rat::from_int(q.leading().cloned().unwrap_or_default()) / &(&Rat::from_int(p.leading().cloned().unwrap_or_default()) * &bn);
             prop_assert!(kappa.signum() > 0);
             prop_assert_eq!(q.eval_rat(&u), &kappa * &p.eval_rat(&(&a + &(&b * &u))));
+        }
+
+        #[test]
+        fn affine_multiple_is_exact(p in zpoly_deg(0, 9, 150), (a, b) in prop_oneof![
+            (rat(), rat()),
+            // Dyadic ends and widths: the shifts instead of products.
+            ((-999i64..999, 0u64..70), (-99i64..99, 0u64..70)).prop_map(|((x, e), (y, f))| {
+                let dyadic = |v: i64, k: u64| Rat::new(Int::from(v), Int::one().shl(k)).expect("nonzero");
+                (dyadic(x, e), dyadic(y, f))
+            }),
+        ], u in rat()) {
+            prop_assume!(!b.is_zero());
+            let d = Rat::from_int(a.denom().lcm(b.denom()));
+            let n = p.degree().unwrap_or(0);
+            let mut dn = Rat::one();
+            for _ in 0..n { dn = &dn * &d; }
+            let q = p.compose_affine_multiple(&a, &b);
+            prop_assert_eq!(q.eval_rat(&u), &dn * &p.eval_rat(&(&a + &(&b * &u))));
         }
 
         #[test]
