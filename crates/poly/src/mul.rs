@@ -118,16 +118,51 @@ pub enum Method {
 /// 41.1, 38.9 / 96.6; n = 128: 34.1 / 20.9, 35.3 / 39.2, 84.9 / 77.3. So
 /// with dashu the multimodular product stops at 24,576 bits (the factors'
 /// coefficient bits together).
+///
+/// Wide coefficients keep the schoolbook product longer with dashu: its
+/// products of a few hundred bits are cheap next to Kronecker's packed
+/// product of the whole vectors. Measured on the project machine (best of
+/// five, µs, schoolbook / Kronecker, `n × n` coefficients of `L` limbs):
+/// n = 9: L = 6 14.1 / 9.5, L = 8 10.8 / 13.9, L = 32 82 / 99; n = 13:
+/// L = 8 23.2 / 23.7, L = 16 54.6 / 66.4; n = 17: L = 11 55.4 / 57.3,
+/// L = 32 284 / 274; n = 21: L = 11 83.4 / 77.2. Squares, where the
+/// schoolbook method needs only half the products
+/// ([`choose_square_method`]), keep it longer still: n = 9, L = 6:
+/// 5.4 / 7.4; n = 17, L = 6: 17.6 / 18.8; n = 21, L = 6: 26.5 / 24.7;
+/// n = 25, L = 8: 47.7 / 52.1, L = 32: 319 / 365.
 pub fn choose_method(la: usize, lb: usize, abits: u64, bbits: u64) -> Method {
+    choose(la, lb, abits, bbits, false)
+}
+
+/// The method [`sqr_coeffs`] picks for a square of `len` coefficients of at
+/// most `bits` bits (see [`choose_method`] for the measurements).
+pub fn choose_square_method(len: usize, bits: u64) -> Method {
+    choose(len, len, bits, bits, true)
+}
+
+/// The method for `a·b` (`a = b` when `square`): the widths are read only
+/// past [`SCHOOLBOOK_MAX_LEN`] (most products of a query are shorter).
+fn method_for(a: &[Int], b: &[Int], square: bool) -> Method {
+    if a.len().min(b.len()) as u64 <= SCHOOLBOOK_MAX_LEN {
+        return Method::Schoolbook;
+    }
+    let width = |v: &[Int]| v.iter().map(Int::bits).max().unwrap_or(0);
+    let abits = width(a);
+    let bbits = if square { abits } else { width(b) };
+    choose(a.len(), b.len(), abits, bbits, square)
+}
+
+/// [`choose_method`], for a square when `square`.
+fn choose(la: usize, lb: usize, abits: u64, bbits: u64, square: bool) -> Method {
     let short = la.min(lb) as u64;
-    if short <= SCHOOLBOOK_MAX_LEN {
+    if short <= schoolbook_max_len(abits.min(bbits), square) {
         return Method::Schoolbook;
     }
     let bits = abits + bbits;
-    let multimodular = match ccd_arith::BACKEND {
-        "gmp" => false,
-        "dashu" => bits < MULTIMODULAR_MAX_BITS,
-        _ => true,
+    let multimodular = match KERNEL {
+        Kernel::Gmp => false,
+        Kernel::Dashu => bits < MULTIMODULAR_MAX_BITS,
+        Kernel::NumBigint => true,
     };
     if multimodular && short >= 24 && bits >= 256 && short * bits >= 32_768 {
         return Method::Multimodular;
@@ -140,17 +175,50 @@ pub fn choose_method(la: usize, lb: usize, abits: u64, bbits: u64) -> Method {
 const MULTIMODULAR_MAX_BITS: u64 = 24_576;
 
 /// Factors whose shorter one has at most this many coefficients are
-/// multiplied schoolbook.
+/// multiplied schoolbook (at any width).
 const SCHOOLBOOK_MAX_LEN: u64 = 8;
+
+/// The longest shorter factor multiplied schoolbook, when the narrower
+/// factor's widest coefficient has `bits` bits: [`SCHOOLBOOK_MAX_LEN`], and
+/// longer for wide coefficients: with dashu more than 5 limbs for a
+/// square, more than 7 for a product ([`choose_method`]); with GMP, whose
+/// products favour Kronecker substitution from 9 coefficients at every
+/// width, squares of up to 13 coefficients of more than 5 limbs (n = 9,
+/// L = 11: 8.7 / 13.7 µs; n = 13, L = 11: 18.0 / 25.4; n = 17, L = 16:
+/// 118 / 100).
+fn schoolbook_max_len(bits: u64, square: bool) -> u64 {
+    match (KERNEL, square, bits) {
+        (Kernel::Dashu, true, 449..) => 24,
+        (Kernel::Dashu, true, 321..) | (Kernel::Dashu, false, 449..) => 16,
+        (Kernel::Gmp, true, 321..) => 13,
+        _ => SCHOOLBOOK_MAX_LEN,
+    }
+}
+
+/// [`ccd_arith::BACKEND`], decided at compile time (the dispatch runs on
+/// every product: comparing the name there cost 14K instructions a query).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kernel {
+    Dashu,
+    Gmp,
+    NumBigint,
+}
+
+const KERNEL: Kernel = {
+    let name = ccd_arith::BACKEND.as_bytes();
+    match name {
+        b"dashu" => Kernel::Dashu,
+        b"gmp" => Kernel::Gmp,
+        _ => Kernel::NumBigint,
+    }
+};
 
 /// `Σ_{i+j=k} a_i b_j` by the method [`choose_method`] picks.
 pub fn mul_coeffs(a: &[Int], b: &[Int]) -> Vec<Int> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
-    let abits = a.iter().map(Int::bits).max().unwrap_or(0);
-    let bbits = b.iter().map(Int::bits).max().unwrap_or(0);
-    match choose_method(a.len(), b.len(), abits, bbits) {
+    match method_for(a, b, false) {
         Method::Schoolbook => mul_schoolbook(a, b),
         Method::Kronecker => mul_kronecker(a, b),
         Method::Multimodular => mul_multimodular(a, b),
@@ -178,9 +246,7 @@ pub fn add_mul_coeffs(acc: &mut Vec<Int>, a: &[Int], b: &[Int], negate: bool) {
     if acc.len() < len {
         acc.resize(len, Int::zero());
     }
-    let abits = a.iter().map(Int::bits).max().unwrap_or(0);
-    let bbits = b.iter().map(Int::bits).max().unwrap_or(0);
-    if choose_method(a.len(), b.len(), abits, bbits) != Method::Schoolbook {
+    if method_for(a, b, false) != Method::Schoolbook {
         for (slot, c) in acc.iter_mut().zip(mul_coeffs(a, b)) {
             *slot = if negate { &*slot - &c } else { &*slot + &c };
         }
@@ -190,9 +256,9 @@ pub fn add_mul_coeffs(acc: &mut Vec<Int>, a: &[Int], b: &[Int], negate: bool) {
 }
 
 /// `Σ_{i+j=k} a_i a_j`, the square of one coefficient vector: where
-/// [`choose_method`] picks the schoolbook product, each cross product
+/// [`choose_square_method`] picks the schoolbook product, each cross product
 /// `a_i·a_j` (`i < j`) once and doubled, then the diagonal `a_i²` (about
-/// half the products); otherwise the method [`mul_coeffs`] would use.
+/// half the products); otherwise the other method it picks.
 ///
 /// ```
 /// use ccd_arith::Int;
@@ -204,8 +270,7 @@ pub fn sqr_coeffs(a: &[Int]) -> Vec<Int> {
     if a.is_empty() {
         return Vec::new();
     }
-    let bits = a.iter().map(Int::bits).max().unwrap_or(0);
-    match choose_method(a.len(), a.len(), bits, bits) {
+    match method_for(a, a, true) {
         Method::Schoolbook => {}
         Method::Kronecker => return mul_kronecker(a, a),
         Method::Multimodular => return mul_multimodular(a, a),
@@ -329,6 +394,33 @@ mod tests {
         // And the product there is exact (24 × 24 coefficients of 12,288 bits).
         let (a, b) = (v(24, 192), v(24, 192));
         assert_eq!(mul_coeffs(&a, &b), mul_schoolbook(&a, &b));
+        // Wide but few coefficients: schoolbook with dashu, longer for squares.
+        let dashu = |wide: bool| {
+            if wide && ccd_arith::BACKEND == "dashu" {
+                Method::Schoolbook
+            } else {
+                Method::Kronecker
+            }
+        };
+        assert_eq!(choose_method(16, 40, 449, 2000), dashu(true));
+        assert_eq!(choose_method(16, 40, 448, 2000), dashu(false));
+        assert_eq!(choose_method(17, 17, 2000, 2000), dashu(false));
+        assert_eq!(choose_square_method(16, 321), dashu(true));
+        assert_eq!(choose_square_method(17, 321), dashu(false));
+        assert_eq!(choose_square_method(24, 449), dashu(true));
+        assert_eq!(choose_square_method(25, 449), dashu(false));
+        assert_eq!(choose_square_method(9, 320), dashu(false));
+        assert_eq!(
+            choose_square_method(13, 321),
+            if ccd_arith::BACKEND == "num-bigint" {
+                Method::Kronecker
+            } else {
+                Method::Schoolbook
+            }
+        );
+        let (a, b) = (v(13, 9), v(16, 9));
+        assert_eq!(mul_coeffs(&a, &b), mul_kronecker(&a, &b));
+        assert_eq!(sqr_coeffs(&b), mul_kronecker(&b, &b));
     }
 
     #[test]
