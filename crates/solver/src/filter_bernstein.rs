@@ -182,6 +182,44 @@ impl FilterBernstein {
         self.errs[i] = 0.0;
     }
 
+    /// Descartes' test on one child of a split at the local parameter
+    /// `r ∈ (0, 1)`: the left one (`[lo, m]`, `left`) or the right one
+    /// (`[m, hi]`), from de Casteljau's `(1 − r)·x + r·y` in outward-rounded
+    /// intervals around the coefficients. `Some(true)`: every coefficient of
+    /// the child is signed, without a sign change, and the one at `m` is
+    /// nonzero (the exact child is root-free, and `m` is not a root);
+    /// `Some(false)`: two signed coefficients differ, a sign change the
+    /// exact child has too; `None`: undecided.
+    pub(crate) fn side_root_free(&self, r: &Rat, left: bool) -> Option<bool> {
+        let r = Interval::from_rat(r);
+        let s = Interval::point(1.0) - r;
+        let mut v: Vec<Interval> = self
+            .coeffs
+            .iter()
+            .zip(&self.errs)
+            .map(|(&b, &e)| Interval::point(b) + Interval::new(-e, e))
+            .collect();
+        let n = v.len() - 1;
+        // The child's coefficients, the one at `m` last (the right child's
+        // from `hi` down to `m`: Descartes' rule reads no order).
+        let mut child = Vec::with_capacity(n + 1);
+        child.push(v[if left { 0 } else { n }]);
+        for k in 1..=n {
+            for i in 0..=n - k {
+                v[i] = v[i] * s + v[i + 1] * r;
+            }
+            child.push(v[if left { 0 } else { n - k }]);
+        }
+        let signs: Vec<Option<i32>> = child.iter().map(Interval::sign).collect();
+        let mut nonzero = signs.iter().flatten().filter(|&&x| x != 0);
+        if let Some(&first) = nonzero.next() {
+            if nonzero.any(|&x| x != first) {
+                return Some(false);
+            }
+        }
+        (signs.iter().all(Option::is_some) && signs[n] != Some(0)).then_some(true)
+    }
+
     /// De Casteljau at `1/2`: the coefficients over the two halves, with the
     /// error bounds of the module documentation. In place: level `k` of the
     /// triangle overwrites entries `0..=n − k` of level `k − 1` (entry `i`
@@ -262,8 +300,47 @@ mod tests {
         assert_eq!(r.signs().collect::<Option<Vec<_>>>(), Some(vec![-1, -1, 1]));
     }
 
+    #[test]
+    fn side_tests_of_a_simple_split() {
+        // (u − 3/4)² − 1/64 on [0, 1], roots 5/8 and 7/8: Bernstein
+        // coefficients 35/64, −13/64, 3/64, times 64.
+        let fb = FilterBernstein::from_exact(&[Int::from(35), Int::from(-13), Int::from(3)], 1);
+        let r = |p: i64, q: i64| Rat::new(Int::from(p), Int::from(q)).expect("nonzero");
+        assert_eq!(fb.side_root_free(&r(1, 2), true), Some(true));
+        assert_eq!(fb.side_root_free(&r(1, 2), false), Some(false));
+        assert_eq!(fb.side_root_free(&r(15, 16), false), Some(true));
+        // At the root 5/8 the cut's coefficient is 0: never proven nonzero.
+        assert_eq!(fb.side_root_free(&r(5, 8), true), None);
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(128))]
+        /// What [`FilterBernstein::side_root_free`] proves is what the
+        /// exact child says (no sign change and nonzero at the cut, or a
+        /// sign change), on long coefficients and cuts of up to 60 bits;
+        /// and it decides a child of one sign far from zero.
+        #[test]
+        fn side_tests_are_the_exact_ones(
+            raw in proptest::collection::vec(-1000i64..1000, 2..14),
+            big in 0u32..300,
+            (p, k) in proptest::strategy::Strategy::prop_flat_map(1u64..60, |k| (1u64..(1 << k), proptest::prelude::Just(k))),
+            left in proptest::prelude::any::<bool>(),
+        ) {
+            let scale = Int::from(3).pow(big);
+            let c: Vec<Int> = raw.iter().map(|&x| &scale * &Int::from(x) + Int::from(x % 7)).collect();
+            let r = Rat::new(Int::from_u64(p), Int::one().shl(k)).expect("nonzero");
+            let exact = Bernstein::from_parts(Rat::zero(), Rat::one(), Rat::one(), c.clone());
+            let (l, rt) = exact.split(&r);
+            let (child, at_cut) = if left { (&l, l.sign_at_hi()) } else { (&rt, rt.sign_at_lo()) };
+            let fb = FilterBernstein::from_exact(&c, 1);
+            match fb.side_root_free(&r, left) {
+                Some(true) => proptest::prop_assert!(child.sign_variations() == 0 && at_cut != 0),
+                Some(false) => proptest::prop_assert!(child.sign_variations() != 0),
+                None => {}
+            }
+            let positive: Vec<Int> = raw.iter().map(|&x| &scale * &Int::from(x.abs() + 1)).collect();
+            proptest::prop_assert_eq!(FilterBernstein::from_exact(&positive, 1).side_root_free(&r, left), Some(true));
+        }
         /// Every second-difference sign the filter proves is the exact
         /// one, on coefficients long enough to be rounded (and after a
         /// split, whose errors it must carry).

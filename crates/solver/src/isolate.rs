@@ -495,8 +495,10 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// for a `k`-fold root; exact values) picks the subinterval `I′` of
     /// width `w/N`, `N = 2^speed`, on the grid of `w/(4N)` around `λ`. If
     /// Descartes' rule proves the rest of `I` root-free (no sign variation
-    /// in the exact Bernstein coefficients on either side, nonzero at the
-    /// cuts), `I′` replaces `I` and the next zoom is `N²`; otherwise `I` is
+    /// in the Bernstein coefficients on either side, nonzero at the cuts:
+    /// proven in intervals around `I`'s coefficients where they decide,
+    /// else on the exact ones), `I′` replaces `I` and the next zoom is
+    /// `N²`; otherwise `I` is
     /// returned for bisection and the next zoom is `√N`. A cluster of
     /// width `δ` then takes about `log log(w/δ)` zooms instead of
     /// `log(w/δ)` bisections. Every step is exact, so the roots kept are
@@ -508,15 +510,6 @@ impl<M: SignModel + Clone> RootIter<M> {
         // A failed zoom: slower next time, and not before another streak.
         node.cluster.speed = (speed / 2).max(MIN_SPEED);
         node.cluster.streak = 0;
-        let converted;
-        let b = match &node.coeffs {
-            Coeffs::Exact(b) => b,
-            Coeffs::Filter(_) => {
-                converted = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
-                self.charge(&converted, end_bits(&converted));
-                &converted
-            }
-        };
         // Widths are powers of two here (halvings and zooms of [lo, hi] by
         // powers of two); anything else is left to bisection.
         let w = &node.hi - &node.lo;
@@ -541,20 +534,45 @@ impl<M: SignModel + Clone> RootIter<M> {
         let i = (estimate - Int::from(2)).clamp(Int::zero(), &total - &four);
         // Both cuts are dyadic splits of I's own coefficients; I′ itself
         // comes from the power basis (a split of a split would cut at a
-        // non-dyadic ratio, with a rational scale to reduce).
+        // non-dyadic ratio, with a rational scale to reduce). Each side is
+        // first tried in intervals around the coefficients
+        // ([`FilterBernstein::side_root_free`]: the early zooms, up to
+        // about 2⁻²⁴ of I, decide there), exactly only where they leave it
+        // open.
         let cut = |j: &Int| Rat::new(j.clone(), total.clone()).expect("nonzero");
         let end = &i + &four;
-        if !i.is_zero() {
-            let (left, _) = b.split(&cut(&i));
-            self.charge(&left, i.bits());
-            if left.sign_variations() != 0 || left.sign_at_hi() == 0 {
-                return None;
+        let filter = match &node.coeffs {
+            Coeffs::Exact(b) => FilterBernstein::from_exact(b.coeffs(), b.scale().signum()),
+            Coeffs::Filter(f) => f.clone(),
+        };
+        let mut converted = None;
+        for (j, left) in [(&i, true), (&end, false)] {
+            if *j == if left { Int::zero() } else { total.clone() } {
+                continue;
             }
-        }
-        if end != total {
-            let (_, right) = b.split(&cut(&end));
-            self.charge(&right, end.bits());
-            if right.sign_variations() != 0 || right.sign_at_lo() == 0 {
+            match filter.side_root_free(&cut(j), left) {
+                Some(true) => continue,
+                Some(false) => return None,
+                None => {}
+            }
+            let b = match &node.coeffs {
+                Coeffs::Exact(b) => b,
+                Coeffs::Filter(_) => converted.get_or_insert_with(|| {
+                    let b = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
+                    self.charge(&b, end_bits(&b));
+                    b
+                }),
+            };
+            let (l, r) = b.split(&cut(j));
+            let (side, at_cut) = if left {
+                let at = l.sign_at_hi();
+                (l, at)
+            } else {
+                let at = r.sign_at_lo();
+                (r, at)
+            };
+            self.charge(&side, j.bits());
+            if side.sign_variations() != 0 || at_cut == 0 {
                 return None;
             }
         }
