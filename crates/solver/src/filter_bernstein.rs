@@ -311,6 +311,16 @@ mod tests {
         assert_eq!(fb.side_root_free(&r(15, 16), false), Some(true));
         // At the root 5/8 the cut's coefficient is 0: never proven nonzero.
         assert_eq!(fb.side_root_free(&r(5, 8), true), None);
+        // A coefficient the filter cannot sign leaves the side open even
+        // where the signed ones agree: 1, [−1, 2], 1 (an exact child could
+        // change sign twice).
+        let open = FilterBernstein::from_intervals(&[
+            Interval::point(1.0),
+            Interval::new(-1.0, 2.0),
+            Interval::point(1.0),
+        ]);
+        assert_eq!(open.side_root_free(&r(1, 2), true), None);
+        assert_eq!(open.side_root_free(&r(1, 2), false), None);
     }
 
     proptest::proptest! {
@@ -338,6 +348,14 @@ mod tests {
                 Some(false) => proptest::prop_assert!(child.sign_variations() != 0),
                 None => {}
             }
+            // A root at the cut itself, cuts of up to 123 bits (past f64's
+            // 53): that side is never proven root-free.
+            let cut = Rat::new(Int::from_u64(p).shl(64) + Int::from_u64(p ^ 0x9e37_79b9), Int::one().shl(k + 64)).expect("nonzero");
+            let h = ccd_poly::ZPoly::new(raw.iter().map(|&x| Int::from(x.abs() + 1)).collect());
+            let at_cut = &ccd_poly::ZPoly::new(vec![-cut.numer().clone(), cut.denom().clone()]) * &h;
+            let b = Bernstein::from_power(&at_cut, &Rat::zero(), &Rat::one());
+            let filter = FilterBernstein::from_exact(b.coeffs(), 1);
+            proptest::prop_assert_ne!(filter.side_root_free(&cut, left), Some(true));
             let positive: Vec<Int> = raw.iter().map(|&x| &scale * &Int::from(x.abs() + 1)).collect();
             proptest::prop_assert_eq!(FilterBernstein::from_exact(&positive, 1).side_root_free(&r, left), Some(true));
         }

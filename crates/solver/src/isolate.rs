@@ -892,7 +892,7 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Exclusion, Node, RootIter, SignSummary};
+    use super::{end_bits, exact_work, Coeffs, Exclusion, Node, RootIter, SignSummary};
     use crate::model::SignProbe;
     use crate::tests::{cluster, dyadic_node};
     use ccd_arith::{Int, Rat};
@@ -1015,6 +1015,35 @@ mod tests {
         let fifth = ZPoly::from_i64s(&[-1, 5]);
         let (found, _) = exclusion(&(&cluster(&a, 900, false) * &fifth), &lo, &hi).expect("convex");
         assert!(matches!(found, Exclusion::RootFree));
+    }
+
+    /// The zoom's side tests decide in intervals where the margins allow
+    /// (a first zoom into two roots `2^(−300)` apart: only the sub-interval
+    /// is charged, no exact split), and exactly where they do not (the
+    /// same zoom at speed 64 charges more than the sub-interval alone);
+    /// both keep both roots.
+    #[test]
+    fn zoom_sides_in_intervals_then_exactly() {
+        let a = Rat::from_frac(1, 3);
+        let p = cluster(&a, 300, true);
+        let (lo, hi) = dyadic_node(&a, 2);
+        let (left, right) = (
+            &a - &Rat::dyadic(Int::one(), 300),
+            &a + &Rat::dyadic(Int::one(), 300),
+        );
+        for (speed, intervals) in [(2, true), (64, false)] {
+            let mut iter = RootIter::new(SignProbe::shared(p.clone()), &lo, &hi);
+            let mut node = Node::exact(&p, lo.clone(), hi.clone(), 0);
+            node.cluster.speed = speed;
+            let before = iter.work();
+            let zoomed = iter.zoom(&mut node, 2).expect("the zoom holds");
+            assert!(zoomed.lo < left && right < zoomed.hi);
+            let Coeffs::Exact(b) = &zoomed.coeffs else {
+                panic!("a zoom's sub-interval is exact");
+            };
+            let middle_only = before + exact_work(b, end_bits(b));
+            assert_eq!(iter.work() == middle_only, intervals, "speed {speed}");
+        }
     }
 
     fn summary(signs: &[i32]) -> Option<SignSummary> {
