@@ -224,6 +224,21 @@ impl Int {
     pub fn trailing_zeros(&self) -> Option<u64> {
         k::trailing_zeros(&self.0)
     }
+    /// `k` when `self = 2^k` (`k ≥ 0`), else `None` (zero and negative
+    /// numbers included).
+    ///
+    /// ```
+    /// use ccd_arith::Int;
+    /// assert_eq!(Int::from(8).exact_log2(), Some(3));
+    /// assert_eq!(Int::from(1).exact_log2(), Some(0));
+    /// assert_eq!(Int::from(-8).exact_log2(), None);
+    /// assert_eq!(Int::from(12).exact_log2(), None);
+    /// ```
+    #[inline]
+    pub fn exact_log2(&self) -> Option<u64> {
+        let k = self.trailing_zeros()?;
+        (self.signum() > 0 && self.bits() == k + 1).then_some(k)
+    }
     /// `self^e`.
     #[inline]
     pub fn pow(&self, e: u32) -> Int {

@@ -131,8 +131,7 @@ impl Rat {
     /// The exponent `k` of a dyadic rational `m/2^k` in lowest terms, or
     /// `None` if the denominator is not a power of two.
     pub fn dyadic_exponent(&self) -> Option<u64> {
-        let k = self.den.trailing_zeros().unwrap_or(0);
-        (self.den.bits() == k + 1).then_some(k)
+        self.den.exact_log2()
     }
     /// `self · 2^k` for a signed `k`.
     pub fn mul_pow2(&self, k: i64) -> Rat {

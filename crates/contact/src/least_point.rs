@@ -224,7 +224,7 @@ fn outward_time<N: Real>((lo, hi): (&Rat, &Rat), prec: u32) -> N {
 
 /// `−H⁻¹g` when it lies strictly inside the unit ball.
 fn free_minimum(h: &[[f64; 3]; 3], g: &[f64; 3]) -> Option<[f64; 3]> {
-    solve_shifted(h, 0.0, &g.map(|x| -x)).filter(|c| c.iter().map(|x| x * x).sum::<f64>() < 1.0)
+    solve_shifted(h, 0.0, &g.map(|x| -x)).filter(|c| norm(c) < 1.0)
 }
 
 /// `(H + μI)⁻¹·rhs` by Cramer's rule, `None` when `H + μI` is singular

@@ -128,7 +128,7 @@ impl ExactRoot {
         coefficients: &Rc<Coefficients>,
         max_bits: Option<i64>,
     ) -> Option<i32> {
-        if let Some(&(_, s)) = self.known.iter().find(|(k, _)| *k == q) {
+        if let Some(s) = self.known(q) {
             return Some(s);
         }
         let m = model(coefficients, q);
@@ -139,10 +139,14 @@ impl ExactRoot {
     /// Whether `q` vanishes at the root: its sign when known, else the
     /// zero test alone ([`RealRoot::vanishes_with`]).
     fn vanishes(&self, q: Quantity, coefficients: &Rc<Coefficients>) -> bool {
-        match self.known.iter().find(|(k, _)| *k == q) {
-            Some(&(_, s)) => s == 0,
+        match self.known(q) {
+            Some(s) => s == 0,
             None => each!(&self.isolation, r => r.vanishes_with(&model(coefficients, q))),
         }
+    }
+    /// The sign of `q` proven at the root so far.
+    fn known(&self, q: Quantity) -> Option<i32> {
+        self.known.iter().find(|(k, _)| *k == q).map(|&(_, s)| s)
     }
 }
 

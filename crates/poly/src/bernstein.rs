@@ -167,10 +167,10 @@ enum Factor {
 
 impl Factor {
     fn of(x: &Int) -> Factor {
-        match x.trailing_zeros() {
-            Some(0) if x.is_one() => Factor::One,
-            Some(k) if k > 0 && x.shr_floor(k).is_one() => Factor::Pow2(k),
-            _ => Factor::Other(x.clone()),
+        match x.exact_log2() {
+            Some(0) => Factor::One,
+            Some(k) => Factor::Pow2(k),
+            None => Factor::Other(x.clone()),
         }
     }
     /// `x ← factor·x`.

@@ -198,8 +198,8 @@ fn schoolbook_max_len(bits: u64, square: bool) -> u64 {
     }
 }
 
-/// [`ccd_arith::BACKEND`], decided at compile time (the dispatch runs on
-/// every product: comparing the name there cost 14K instructions a query).
+/// [`ccd_arith::BACKEND`] as a compile-time constant, for the dispatch's
+/// matches.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Kernel {
     Dashu,

@@ -546,8 +546,8 @@ impl<M: SignModel + Clone> RootIter<M> {
             Coeffs::Filter(f) => f.clone(),
         };
         let mut converted = None;
-        for (j, left) in [(&i, true), (&end, false)] {
-            if *j == if left { Int::zero() } else { total.clone() } {
+        for (j, left, at_end) in [(&i, true, i.is_zero()), (&end, false, end == total)] {
+            if at_end {
                 continue;
             }
             match filter.side_root_free(&cut(j), left) {
@@ -564,12 +564,11 @@ impl<M: SignModel + Clone> RootIter<M> {
                 }),
             };
             let (l, r) = b.split(&cut(j));
-            let (side, at_cut) = if left {
-                let at = l.sign_at_hi();
-                (l, at)
+            let side = if left { l } else { r };
+            let at_cut = if left {
+                side.sign_at_hi()
             } else {
-                let at = r.sign_at_lo();
-                (r, at)
+                side.sign_at_lo()
             };
             self.charge(&side, j.bits());
             if side.sign_variations() != 0 || at_cut == 0 {

@@ -77,9 +77,7 @@ fn times_successive_powers<'a>(v: impl Iterator<Item = &'a mut Int>, x: &Int) {
     if x.is_one() {
         return;
     }
-    let twos = x
-        .trailing_zeros()
-        .filter(|&k| x.signum() > 0 && k + 1 == x.bits());
+    let twos = x.exact_log2();
     let mut power = Int::one();
     for (j, entry) in (1u64..).zip(v) {
         match twos {
