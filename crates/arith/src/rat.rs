@@ -131,7 +131,10 @@ impl Rat {
     /// The exponent `k` of a dyadic rational `m/2^k` in lowest terms, or
     /// `None` if the denominator is not a power of two.
     pub fn dyadic_exponent(&self) -> Option<u64> {
-        self.den.exact_log2()
+        // [`Int::exact_log2`] without its sign test (the denominator is
+        // positive): comparisons and sums of rationals ask this first.
+        let k = self.den.trailing_zeros().unwrap_or(0);
+        (self.den.bits() == k + 1).then_some(k)
     }
     /// `self · 2^k` for a signed `k`.
     pub fn mul_pow2(&self, k: i64) -> Rat {
