@@ -110,6 +110,11 @@ pub fn run(scene: &Scene, options: &Options) -> Result<Outcome, CcdError> {
     }
     match options.arithmetic {
         Arithmetic::Exact => {
+            if options.raycast {
+                if let Some(outcome) = ccd_raycast::run(scene, options) {
+                    return Ok(outcome);
+                }
+            }
             ccd_algorithm::run(ccd_exact_arith::Exact::new(scene, options.digits)?, options)
         }
         Arithmetic::Float => {

@@ -106,6 +106,11 @@ struct QueryArgs {
     /// Skip the contact point and normal of each contact
     #[arg(long)]
     no_geometry: bool,
+    /// Pairs translating along straight lines: answer by a certified ray
+    /// cast into the Minkowski difference (microseconds, f64 interval
+    /// ends), falling back to the exact path where it proves less
+    #[arg(long)]
+    raycast: bool,
 }
 
 /// How a scene's result is written; each option is one more output.
@@ -172,6 +177,7 @@ impl QueryArgs {
                 ArithmeticArg::Float => Arithmetic::Float,
             },
             contact_geometry: !self.no_geometry,
+            raycast: self.raycast,
         }
     }
 }

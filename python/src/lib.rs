@@ -192,6 +192,7 @@ fn options(
         digits,
         arithmetic,
         contact_geometry: geometry,
+        ..Options::default()
     })
 }
 

@@ -26,6 +26,11 @@ pub struct Options {
     /// Compute the contact point and normal of each contact
     /// (`Outcome::geometry`); `false` leaves it empty (default `true`).
     pub contact_geometry: bool,
+    /// Pairs that only translate along straight lines: answer by the
+    /// certified ray cast of `ccd-raycast` where it proves everything
+    /// asked (instants then have `f64` ends), else by Algorithm 1
+    /// (default `false`: every answer from Algorithm 1).
+    pub raycast: bool,
 }
 
 impl Default for Options {
@@ -35,6 +40,7 @@ impl Default for Options {
             first_contact_only: false,
             arithmetic: Arithmetic::Exact,
             contact_geometry: true,
+            raycast: false,
         }
     }
 }

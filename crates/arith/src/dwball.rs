@@ -175,7 +175,19 @@ impl DwBall {
         match x.dyadic_exponent() {
             Some(j) => DwBall::from_int_scaled(x.numer(), j as i64),
             None => {
-                DwBall::from_int_scaled(x.numer(), 0).div(&DwBall::from_int_scaled(x.denom(), 0))
+                // Short numerator and denominator (decimal scene numbers):
+                // both exact in f64, which is what `from_int_scaled` gives
+                // them, without its big-integer steps.
+                const EXACT: u64 = 1 << 53;
+                let small = |v: &Int| v.to_i64().filter(|v| v.unsigned_abs() <= EXACT);
+                let (n, d) = match (small(x.numer()), small(x.denom())) {
+                    (Some(n), Some(d)) => (DwBall::exact(n as f64), DwBall::exact(d as f64)),
+                    _ => (
+                        DwBall::from_int_scaled(x.numer(), 0),
+                        DwBall::from_int_scaled(x.denom(), 0),
+                    ),
+                };
+                n.div(&d)
             }
         }
     }
@@ -286,6 +298,52 @@ impl DwBall {
     }
 }
 
+impl DwBall {
+    /// `√x` for a quantity known to be `>= 0`: one Newton step in double
+    /// words from `√hi` gives the centre `q`, and
+    /// `|√x − q| = |x − q²| / (√x + q) <= |x − q²| / q` over the ball gives
+    /// the radius (unknown when `q` is not positive).
+    pub fn sqrt(&self) -> DwBall {
+        if !self.is_known() || self.hi.is_nan() || self.hi <= 0.0 {
+            return DwBall::unknown();
+        }
+        let q0 = self.hi.sqrt();
+        let (ph, pl) = two_prod(q0, q0);
+        let r = ((self.hi - ph) - pl + self.lo) / (2.0 * q0);
+        let (zh, zl) = fast_two_sum(q0, r);
+        let q = DwBall::checked(zh, zl, 0.0);
+        let bound = self.minus(&q.times(&q)).abs_upper();
+        let tiny = if bound > 0.0 { TINY } else { 0.0 };
+        DwBall::checked(zh, zl, bound / (zh * DOWN) * UP + tiny)
+    }
+}
+
+/// The operators of [`RingOps`], for generic code written with `+ − ×`.
+impl std::ops::Add for DwBall {
+    type Output = DwBall;
+    fn add(self, o: DwBall) -> DwBall {
+        self.plus(&o)
+    }
+}
+impl std::ops::Sub for DwBall {
+    type Output = DwBall;
+    fn sub(self, o: DwBall) -> DwBall {
+        self.minus(&o)
+    }
+}
+impl std::ops::Mul for DwBall {
+    type Output = DwBall;
+    fn mul(self, o: DwBall) -> DwBall {
+        self.times(&o)
+    }
+}
+impl std::ops::Neg for DwBall {
+    type Output = DwBall;
+    fn neg(self) -> DwBall {
+        self.negated()
+    }
+}
+
 impl RingOps for DwBall {
     fn zero() -> Self {
         DwBall::exact(0.0)
@@ -351,6 +409,26 @@ mod tests {
         digits.iter().fold(Int::zero(), |acc, &d| {
             &acc.shl(shift as u64) + &Int::from(d)
         })
+    }
+
+    proptest! {
+        /// Square roots enclose: `lo² <= x <= hi²` in rationals, with a
+        /// radius near the double-word precision for an exact operand,
+        /// on long integers scaled far up and down.
+        #[test]
+        fn roots_enclose(a in proptest::collection::vec(1i64..(1i64 << 40), 1..6), shift in 1u32..41, scale in -300i64..300) {
+            let x = big(&a, shift);
+            let b = DwBall::from_int_scaled(&x, scale);
+            let r = b.sqrt();
+            let (lo, hi) = r.ends().expect("known");
+            let exact = Rat::from_int(x).mul_pow2(-scale);
+            prop_assert!(lo.signum() >= 0 && &lo * &lo <= exact && exact <= &hi * &hi);
+            if b.rad == 0.0 {
+                prop_assert!(r.rad <= r.hi.abs() * 1e-29, "{:?}", r);
+            }
+            prop_assert!(DwBall::exact(0.0).sqrt().rad.is_infinite());
+            prop_assert!(DwBall::exact(-1.0).sqrt().rad.is_infinite());
+        }
     }
 
     proptest! {

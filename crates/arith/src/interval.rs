@@ -7,7 +7,7 @@
 //! since round-to-nearest is off by at most half an ulp.
 
 use crate::{Int, Rat};
-use std::ops::{Add, Mul, Neg, Sub};
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// A closed interval `[lo, hi]` of reals, `lo <= hi`, possibly unbounded.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -140,6 +140,21 @@ impl Interval {
             hi: up(hi),
         }
     }
+    /// `√x` over the nonnegative part of the interval, for a quantity known
+    /// to be `>= 0` whose enclosure rounding may have pushed below zero
+    /// (`f64::sqrt` is correctly rounded, so one step out on each side
+    /// holds the exact root); [`Interval::ENTIRE`] when `hi < 0` or NaN.
+    pub fn sqrt(self) -> Interval {
+        if self.hi.is_nan() || self.hi < 0.0 {
+            return Interval::ENTIRE;
+        }
+        let lo = if self.lo > 0.0 {
+            down(self.lo.sqrt()).max(0.0)
+        } else {
+            0.0
+        };
+        Interval::new(lo, up(self.hi.sqrt()))
+    }
     /// Midpoint (not certified).
     pub fn mid(&self) -> f64 {
         0.5 * self.lo + 0.5 * self.hi
@@ -225,6 +240,22 @@ impl Sub for Interval {
     #[inline]
     fn sub(self, o: Interval) -> Interval {
         Interval::new(down(self.lo - o.hi), up(self.hi - o.lo))
+    }
+}
+/// `self / d`: the hull of the quotients when `d` excludes zero,
+/// [`Interval::ENTIRE`] otherwise.
+impl Div for Interval {
+    type Output = Interval;
+    fn div(self, d: Interval) -> Interval {
+        if d.contains_zero() {
+            return Interval::ENTIRE;
+        }
+        Interval::hull_widened([
+            self.lo / d.lo,
+            self.lo / d.hi,
+            self.hi / d.lo,
+            self.hi / d.hi,
+        ])
     }
 }
 impl Neg for Interval {
@@ -340,6 +371,32 @@ mod tests {
             if let Some(l) = to_rat(i.lo) { prop_assert!(l <= xr); }
             if let Some(h) = to_rat(i.hi) { prop_assert!(xr <= h); }
         }
+    }
+
+    proptest! {
+        /// Quotients and square roots enclose the exact values: `q·d`
+        /// and `r²` bracket the operands (checked in rationals).
+        #[test]
+        fn division_and_roots_enclose(a in -1_000_000i64..1_000_000, b in 1i64..1_000_000, c in 1i64..1000, neg in any::<bool>()) {
+            let x = Rat::from_frac(a, c);
+            let y = Rat::from_frac(if neg { -b } else { b }, 7);
+            let q = Interval::from_rat(&x) / Interval::from_rat(&y);
+            let exact = &x / &y;
+            let r = |v: f64| Rat::from_f64_exact(v).expect("finite");
+            prop_assert!(r(q.lo) <= exact && exact <= r(q.hi), "{:?} {}", q, exact);
+            let s = Interval::from_rat(&x.abs()).sqrt();
+            let (lo, hi) = (r(s.lo), r(s.hi));
+            prop_assert!(&lo * &lo <= x.abs() && x.abs() <= &hi * &hi, "{:?}", s);
+        }
+    }
+
+    #[test]
+    fn division_by_zero_and_roots_of_negatives_are_refused() {
+        let one = Interval::point(1.0);
+        assert_eq!(one / Interval::new(-1.0, 1.0), Interval::ENTIRE);
+        assert_eq!(Interval::point(-1.0).sqrt(), Interval::ENTIRE);
+        assert_eq!(Interval::new(-1e-300, 4.0).sqrt().lo, 0.0);
+        assert!(Interval::point(4.0).sqrt().lo < 2.0 && Interval::point(4.0).sqrt().hi > 2.0);
     }
 
     /// Ordinary floats of any size and the special values.

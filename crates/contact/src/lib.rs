@@ -574,6 +574,16 @@ impl Goal {
             normal: &(&size / &smallest) * &tol,
         }
     }
+    /// Lower bounds of the two goals in `f64` (`[point, normal]`) from
+    /// the largest and the smallest radius (rounded to nearest): a box
+    /// whose widths, rounded up, are at most these meets the goal
+    /// ([`Goal::met`]) without its exact rationals. The margin `1 − 10⁻⁹`
+    /// covers every rounding of the radii, of `10^(−k)` and of the products.
+    pub fn floors(largest: f64, smallest: f64, digits: u32) -> [f64; 2] {
+        let k = digits.saturating_sub(3).clamp(12, 400) as i32;
+        let tol = 10f64.powi(-k) * (1.0 - 1e-9);
+        [largest * tol, largest / smallest * tol]
+    }
     /// Whether a result meets the goal.
     pub fn met(&self, g: &Geometry) -> bool {
         match g {

@@ -122,6 +122,31 @@ fn goal_follows_digits_and_size() {
     assert_eq!(g.point, Rat::new(Int::from(4), Int::pow10(12)).unwrap());
     let g = Goal::new(&body(4), &body(2), 20);
     assert_eq!(g.normal, Rat::new(Int::from(4), Int::pow10(17)).unwrap());
+    // The f64 floors are below the exact goals, and close to them.
+    for (radii, digits) in [((4.0, 1.0), 15), ((4.0, 1.0), 20), ((3.7, 0.3), 30)] {
+        let exact = Goal::new(&body(4), &body(2), digits);
+        let exact = if radii.0 == 4.0 {
+            exact
+        } else {
+            let b = |r: [Rat; 3]| Body {
+                radii: r,
+                motion: ccd_motion::Motion::at_origin(),
+            };
+            Goal::new(
+                &b([r(37, 10), Rat::one(), Rat::one()]),
+                &b([r(3, 10), Rat::one(), Rat::one()]),
+                digits,
+            )
+        };
+        let [p, n] = Goal::floors(radii.0, radii.1, digits);
+        for (floor, goal) in [(p, &exact.point), (n, &exact.normal)] {
+            let f = Rat::from_f64_exact(floor).unwrap();
+            assert!(
+                f <= *goal && f > goal * &r(999_999, 1_000_000),
+                "{floor} {goal}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -217,6 +217,10 @@ pub enum Path {
     Float,
     /// Certified interval enclosures where they decide (helical motions).
     Interval,
+    /// Certified by a ray cast into the Minkowski difference (bodies
+    /// translating along straight lines, `--raycast`): no polynomial is
+    /// formed, so the degrees read 0 and `None`.
+    Raycast,
 }
 
 /// The branch of Algorithm 1 (Section 5) a query took.
@@ -259,6 +263,9 @@ impl Branch {
 impl Stats {
     /// [`Branch::name`] of the branch taken, `""` when none was.
     pub fn branch_name(&self) -> &'static str {
+        if self.path == Path::Raycast {
+            return "raycast";
+        }
         self.branch.map_or("", |b| b.name(self.path))
     }
 }

@@ -1,0 +1,301 @@
+//! Certified contact of two ellipsoids that translate along straight lines,
+//! without forming `f(λ; t)`: a ray cast into their Minkowski difference.
+//!
+//! When neither body turns and each centre moves along a straight line at
+//! constant speed (`static`, or a `translation` of degree ≤ 1 without
+//! weights), the bodies meet exactly when the ray
+//! `c(u) = b(u) − a(u) = c₀ + u·v` lies in the convex body
+//! `K = A₀ ⊕ (−B₀)` ([`line`]). Then:
+//!
+//! * the bodies are **apart over the whole span** when one plane
+//!   `n·x = h_K(n)` has the ray's two ends strictly beyond it
+//!   ([`verify::apart`]);
+//! * the ray **enters** `K` at `u_in = φ(n*)`, the value of
+//!   `φ(n) = (h_K(n) − n·c₀)/(n·v)` at its stationary normal with `n·v < 0`,
+//!   and **leaves** it at `u_out = φ(n*)` for the one with `n·v > 0`
+//!   ([`support`]): for `u < u_in` (and `u > u_out`) the plane of `n*` keeps
+//!   the ray outside `K`, at `u_in` it touches `∂K`, and between the two the
+//!   chord of the strictly convex `K` is in its interior. So the bodies are
+//!   separate before `u_in`, touch externally at `u_in` (a point of both
+//!   surfaces, interiors disjoint, since `int K = int A₀ ⊕ (−int B₀)`),
+//!   overlap on `(u_in, u_out)`, touch at `u_out`, and are separate after.
+//!
+//! The normals are found in `f64` ([`search`]: an outer ellipsoid of `K`,
+//! then Newton's method) and proven in outward-rounded intervals
+//! ([`verify`]: the plane test, and a Krawczyk test that encloses `n*`,
+//! hence the instant and the contact point `a(u*) + ∇h_A(n*)` whose
+//! outward normal is `n*`). Every state and instant of the result is
+//! proven; the instants are intervals with `f64` (dyadic) ends.
+//!
+//! [`run`] answers only what it proves to the query's widths (instants
+//! within `10^(−digits)` of the span, the contact geometry within
+//! [`ccd_contact::Goal`]) and returns `None` otherwise — another motion
+//! kind, a ray that grazes `K` (entry and exit not separated), a crossing
+//! at `t0` or `t1` or before it, bodies that do not move apart,
+//! `--digits` beyond `f64`: the caller then runs Algorithm 1.
+//!
+//! ```
+//! use ccd_scene::Scene;
+//! let scene = Scene::from_toml(r#"
+//!     format = 1
+//!     span = ["0", "1"]
+//!     [a]
+//!     radii = ["1", "1", "1"]
+//!     [b]
+//!     radii = ["2", "2", "2"]
+//!     [b.motion]
+//!     kind = "translation"
+//!     center = [["-10", "1", "0"], ["10", "1", "0"]]
+//! "#).unwrap();
+//! let options = ccd_algorithm::Options::default();
+//! let out = ccd_raycast::run(&scene, &options).expect("a clean crossing");
+//! // K is the ball of radius 3: the ray (−10 + 20u, 1, 0) enters at u = (10 − √8)/20.
+//! let first = out.first_contact.expect("they collide");
+//! let t = (10.0 - 8f64.sqrt()) / 20.0;
+//! assert!(first.lo.to_f64() <= t && t <= first.hi.to_f64());
+//! assert_eq!(out.contacts.len(), 2);
+//! ```
+
+pub mod line;
+pub mod scalar;
+pub mod search;
+pub mod support;
+pub mod verify;
+
+use ccd_algorithm::{time_on, Options};
+use ccd_arith::{DwBall, Interval, Rat};
+use ccd_contact::Goal;
+use ccd_scene::Scene;
+use ccd_timeline::{Box3, Geometry, Instant, Outcome, Path, Segment, State, Stats};
+use line::Line;
+use search::Guess;
+use verify::Crossing;
+
+/// The proven timeline of a pair that translates along straight lines,
+/// or `None` where the ray cast does not prove everything the query asks
+/// for (module docs).
+pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
+    let fine = Line::<DwBall>::of(&scene.a, &scene.b)?;
+    let line = fine.enclosed();
+    let f = line.mid();
+    let apart = || Some(Answer::Apart.outcome(scene, options));
+    let (entry, exit) = match search::guess(&f)? {
+        Guess::Misses(n) => {
+            let planes = [Some(n), search::parallel(&f, &n)];
+            return if planes.iter().flatten().any(|n| verify::apart(&line, n)) {
+                apart()
+            } else {
+                None
+            };
+        }
+        Guess::Crosses { entry, exit } => (
+            search::polish(&f, &entry, -1.0).ok_or(entry),
+            search::polish(&f, &exit, 1.0).ok_or(exit),
+        ),
+    };
+    let (entry, exit) = match (entry, exit) {
+        (Ok(entry), Ok(exit)) => (entry, exit),
+        // The search left the side it started on: a near miss, where the
+        // two normals turn towards the plane parallel to the ray.
+        (entry, exit) => {
+            let [a, b] = [entry, exit].map(|n| n.unwrap_or_else(|n| n));
+            let plane = search::parallel(&f, &std::array::from_fn(|i| a[i] + b[i]));
+            return if plane.is_some_and(|n| verify::apart(&line, &n)) {
+                apart()
+            } else {
+                None
+            };
+        }
+    };
+    if [entry, exit].iter().any(|n| verify::apart(&line, n)) {
+        return apart();
+    }
+    let inn = verify::crossing(&line, &fine, &entry, -1.0)?;
+    if inn.u.lo > 1.0 {
+        // Outside K for every u < u_in.
+        return apart();
+    }
+    if !(inn.u.lo > 0.0 && inn.u.hi < 1.0) {
+        return None;
+    }
+    let out = if options.first_contact_only {
+        None
+    } else {
+        let out = verify::crossing(&line, &fine, &exit, 1.0)?;
+        if !(out.u.lo > inn.u.hi && (out.u.hi < 1.0 || out.u.lo > 1.0)) {
+            return None;
+        }
+        (out.u.hi < 1.0).then_some(out)
+    };
+    let answer = Answer::Crosses(inn, out);
+    answer.fits(&line, options)?;
+    Some(answer.outcome(scene, options))
+}
+
+/// What the proofs found on the span `u ∈ [0, 1]` (one per query, on
+/// the stack: the size of its large variant costs nothing).
+#[allow(clippy::large_enum_variant)]
+enum Answer {
+    /// Separate throughout.
+    Apart,
+    /// Entering at the first crossing, inside `(0, 1)`; leaving at the
+    /// second when it is inside `(0, 1)` and asked for, otherwise still
+    /// overlapping at `u = 1` (or not asked: a first-contact query).
+    Crosses(Crossing, Option<Crossing>),
+}
+
+/// `x` as the exact dyadic rational it is.
+fn exact(x: f64) -> Option<Rat> {
+    Rat::from_f64_exact(x)
+}
+
+/// The instant enclosed by `u`, in time.
+fn instant(span: &[Rat; 2], u: &Interval) -> Option<Instant> {
+    Some(Instant {
+        lo: time_on(span, &exact(u.lo)?),
+        hi: time_on(span, &exact(u.hi)?),
+        certified: true,
+    })
+}
+
+fn box3(x: &[Interval; 3]) -> Option<Box3> {
+    Some(Box3 {
+        lo: [exact(x[0].lo)?, exact(x[1].lo)?, exact(x[2].lo)?],
+        hi: [exact(x[0].hi)?, exact(x[1].hi)?, exact(x[2].hi)?],
+    })
+}
+
+/// The contact point and `A`'s outward normal scaled so that its largest
+/// component is exactly `±1` (`None` unless that component is proven the
+/// largest), as intervals.
+fn geometry(c: &Crossing) -> Option<[[Interval; 3]; 2]> {
+    let mag = |x: &Interval| x.lo.abs().max(x.hi.abs());
+    let mig = |x: &Interval| {
+        if x.contains_zero() {
+            0.0
+        } else {
+            x.lo.abs().min(x.hi.abs())
+        }
+    };
+    let k = (0..3).find(|&k| (0..3).all(|j| j == k || mig(&c.normal[k]) > mag(&c.normal[j])))?;
+    let sign = c.normal[k].sign()?;
+    let size = if sign > 0 { c.normal[k] } else { -c.normal[k] };
+    let normal = std::array::from_fn(|j| {
+        if j == k {
+            Interval::point(f64::from(sign))
+        } else {
+            let q = c.normal[j] / size;
+            Interval::new(q.lo.max(-1.0), q.hi.min(1.0))
+        }
+    });
+    Some([c.point, normal])
+}
+
+/// The widest of three intervals (rounded up).
+fn widest(x: &[Interval; 3]) -> f64 {
+    x.iter().map(Interval::width).fold(0.0, f64::max)
+}
+
+/// [`geometry`] as the contract's boxes.
+fn boxes(c: &Crossing) -> Option<Geometry> {
+    let [point, normal] = geometry(c)?;
+    Some(Geometry::Point {
+        point: box3(&point)?,
+        normal: box3(&normal)?,
+        certified: true,
+    })
+}
+
+impl Answer {
+    /// `Some(())` when every instant is within `10^(−digits)` of the span
+    /// and every contact's geometry within [`Goal::floors`] (when asked
+    /// for).
+    fn fits(&self, line: &Line<Interval>, options: &Options) -> Option<()> {
+        let Answer::Crosses(inn, out) = self else {
+            return Some(());
+        };
+        let tol = 10f64.powi(-(options.digits.min(400) as i32)) * (1.0 - 1e-9);
+        let [largest, smallest] = line.radii;
+        let [point, normal] = Goal::floors(largest, smallest, options.digits);
+        for c in std::iter::once(inn).chain(out) {
+            if !c.u.is_finite() || c.u.width() > tol {
+                return None;
+            }
+            if options.contact_geometry {
+                let [p, n] = geometry(c)?;
+                if !(widest(&p) <= point && widest(&n) <= normal) {
+                    return None;
+                }
+                boxes(c)?;
+            }
+        }
+        Some(())
+    }
+
+    /// The result in the contract's shape, as Algorithm 1 reports it.
+    fn outcome(&self, scene: &Scene, options: &Options) -> Outcome {
+        let span = &scene.span;
+        let [t0, t1] = span.clone().map(Instant::exact);
+        let segment = |state, start: &Instant, end: &Instant| Segment {
+            state,
+            start: start.clone(),
+            end: end.clone(),
+            certified: true,
+        };
+        let (timeline, crossings) = match self {
+            Answer::Apart => (vec![segment(State::Separate, &t0, &t1)], vec![]),
+            Answer::Crosses(inn, out) => {
+                let i = instant(span, &inn.u).expect("finite: checked by fits");
+                let mut timeline = vec![
+                    segment(State::Separate, &t0, &i),
+                    segment(State::Touch, &i, &i),
+                ];
+                let mut crossings = vec![(i.clone(), *inn)];
+                if !options.first_contact_only {
+                    match out {
+                        Some(out) => {
+                            let o = instant(span, &out.u).expect("finite: checked by fits");
+                            timeline.push(segment(State::Overlap, &i, &o));
+                            timeline.push(segment(State::Touch, &o, &o));
+                            timeline.push(segment(State::Separate, &o, &t1));
+                            crossings.push((o, *out));
+                        }
+                        None => timeline.push(segment(State::Overlap, &i, &t1)),
+                    }
+                }
+                (timeline, crossings)
+            }
+        };
+        let geometry = if options.contact_geometry {
+            crossings
+                .iter()
+                .map(|(_, c)| boxes(c).expect("checked by fits"))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let segment_geometry = if options.contact_geometry {
+            vec![None; timeline.len()]
+        } else {
+            Vec::new()
+        };
+        let contacts: Vec<Instant> = crossings.into_iter().map(|(i, _)| i).collect();
+        Outcome {
+            span: span.clone(),
+            collision_free: contacts.is_empty(),
+            undecided: None,
+            first_contact: contacts.first().cloned(),
+            complete: !options.first_contact_only || contacts.is_empty(),
+            contacts,
+            timeline,
+            gaps: Vec::new(),
+            stats: Stats {
+                path: Path::Raycast,
+                candidates: usize::from(matches!(self, Answer::Crosses(..))),
+                ..Stats::default()
+            },
+            geometry,
+            segment_geometry,
+        }
+    }
+}
