@@ -5,7 +5,7 @@
 //! constant speed (`static`, or a `translation` of degree ≤ 1 without
 //! weights), the bodies meet exactly when the ray
 //! `c(u) = b(u) − a(u) = c₀ + u·v` lies in the convex body
-//! `K = A₀ ⊕ (−B₀)` ([`line`]). Then:
+//! `K = A₀ ⊕ (−B₀)` ([`mod@line`]). Then:
 //!
 //! * the bodies are **apart over the whole span** when one plane
 //!   `n·x = h_K(n)` has the ray's two ends strictly beyond it
