@@ -91,5 +91,44 @@ fn geometry(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, static_classification, ccd, geometry);
+/// Straight-line pairs (issue 17's workload: particle moves, planners):
+/// Algorithm 1's exact query against the certified ray cast (`--raycast`),
+/// total and first contact, on a crossing whose `sr0` is formed, a plain
+/// crossing and a miss.
+fn straight_lines(c: &mut Criterion) {
+    let mut g = c.benchmark_group("straight lines");
+    g.sample_size(30).measurement_time(Duration::from_secs(3));
+    for name in ["line01", "line04", "line05"] {
+        let s = scene(&format!("benches/scenes/lines/{name}.toml"));
+        for raycast in [false, true] {
+            for first_contact_only in [false, true] {
+                let o = Options {
+                    raycast,
+                    first_contact_only,
+                    ..Options::default()
+                };
+                let path = run(&s, &o).expect("runs").stats.path;
+                assert_eq!(path == ccd_exact::Path::Raycast, raycast, "{name}");
+                let mode = if raycast { "raycast" } else { "exact" };
+                let what = if first_contact_only {
+                    "first contact"
+                } else {
+                    "total"
+                };
+                g.bench_function(format!("{name} {mode} {what}"), |bench| {
+                    bench.iter(|| run(black_box(&s), &o).expect("runs"))
+                });
+            }
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    static_classification,
+    ccd,
+    geometry,
+    straight_lines
+);
 criterion_main!(benches);

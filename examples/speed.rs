@@ -6,7 +6,9 @@
 //!
 //! Prints one tab-separated line per scene: name, exact total, exact first
 //! contact, float total (µs, medians), exact/float ratio, deg f, deg sr0,
-//! whether `sr0` was formed.
+//! whether `sr0` was formed, then `--raycast` total and first contact (µs)
+//! and the path that answered it (`raycast`, or `exact` where it handed the
+//! query to Algorithm 1).
 
 use ccd_exact::{run, Arithmetic, Options, Scene};
 use std::time::Instant;
@@ -34,9 +36,12 @@ fn main() {
             .max(1);
         args.drain(i..(i + 2).min(args.len()));
     }
-    println!("scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed");
-    for path in args {
-        let Ok(text) = std::fs::read_to_string(&path) else {
+    println!(
+        "scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed\traycast_us\traycast_first_us\traycast_path"
+    );
+    for path_arg in args {
+        let path = &path_arg;
+        let Ok(text) = std::fs::read_to_string(path) else {
             eprintln!("{path}: unreadable");
             continue;
         };
@@ -63,13 +68,33 @@ fn main() {
         } else {
             f64::NAN
         };
-        let name = path.rsplit('/').next().unwrap_or(&path);
+        let ray = Options {
+            raycast: true,
+            ..exact.clone()
+        };
+        let ray_first = Options {
+            raycast: true,
+            ..first.clone()
+        };
+        let r = median_us(reps, || drop(run(&scene, &ray)));
+        let rf = median_us(reps, || drop(run(&scene, &ray_first)));
+        let path = match run(&scene, &ray).map(|o| o.stats.path) {
+            Ok(ccd_exact::Path::Raycast) => "raycast",
+            Ok(_) => "exact",
+            Err(_) => "error",
+        };
+        let name = path_name(&path_arg);
         println!(
-            "{name}\t{e:.1}\t{fc:.1}\t{fl:.1}\t{:.2}\t{}\t{}\t{}",
+            "{name}\t{e:.1}\t{fc:.1}\t{fl:.1}\t{:.2}\t{}\t{}\t{}\t{r:.1}\t{rf:.1}\t{path}",
             e / fl,
             out.stats.deg_f,
             out.stats.deg_sr0.map_or(-1, |d| d as i64),
             out.stats.sr0_formed
         );
     }
+}
+
+/// The file name of a scene path.
+fn path_name(path: &str) -> &str {
+    path.rsplit('/').next().unwrap_or(path)
 }

@@ -11,7 +11,7 @@
 mod common;
 
 use ccd_arith::Rat;
-use ccd_exact::{run, Geometry, Instant, Options, Outcome, Path, Scene};
+use ccd_exact::{run, Geometry, Instant, Options, Outcome, Path, Scene, State};
 use ccd_motion::{Bezier, Body, Motion};
 use common::{state_at, static_state};
 use proptest::prelude::*;
@@ -105,6 +105,15 @@ fn options(first_contact_only: bool, raycast: bool) -> Options {
     }
 }
 
+/// `options` with `digits` and `contact_geometry` too.
+fn asking(first_contact_only: bool, raycast: bool, digits: u32, geometry: bool) -> Options {
+    Options {
+        digits,
+        contact_geometry: geometry,
+        ..options(first_contact_only, raycast)
+    }
+}
+
 fn meet(a: &Instant, b: &Instant) -> bool {
     a.lo <= b.hi && b.lo <= a.hi
 }
@@ -128,7 +137,7 @@ fn geometry_meets(a: &Geometry, b: &Geometry) -> bool {
 
 /// Everything the ray cast says agrees with the exact answer and is
 /// within the query's widths; `Err` names the first disagreement.
-fn agree(scene: &Scene, ray: &Outcome, exact: &Outcome) -> Result<(), String> {
+fn agree(scene: &Scene, ray: &Outcome, exact: &Outcome, digits: u32) -> Result<(), String> {
     let states = |o: &Outcome| o.timeline.iter().map(|s| s.state).collect::<Vec<_>>();
     if states(ray) != states(exact) {
         return Err(format!("states {:?} vs {:?}", states(ray), states(exact)));
@@ -140,7 +149,7 @@ fn agree(scene: &Scene, ray: &Outcome, exact: &Outcome) -> Result<(), String> {
         return Err("uncertified, or another number of contacts".into());
     }
     let span = &scene.span[1] - &scene.span[0];
-    let width = &span * &Rat::new(1.into(), ccd_arith::Int::pow10(15)).expect("nonzero");
+    let width = &span * &Rat::new(1.into(), ccd_arith::Int::pow10(digits)).expect("nonzero");
     for (r, e) in ray.timeline.iter().zip(&exact.timeline) {
         for (x, y) in [(&r.start, &e.start), (&r.end, &e.end)] {
             if !meet(x, y) || x.width() > width {
@@ -169,6 +178,10 @@ fn agree(scene: &Scene, ray: &Outcome, exact: &Outcome) -> Result<(), String> {
             ray.geometry, exact.geometry
         ));
     }
+    let goal = ccd_contact::Goal::new(&scene.a, &scene.b, digits);
+    if let Some(g) = ray.geometry.iter().find(|g| !goal.met(g)) {
+        return Err(format!("geometry wider than the goal: {g:?}"));
+    }
     if ray.segment_geometry.len() != exact.segment_geometry.len() {
         return Err("segment geometry".into());
     }
@@ -177,8 +190,21 @@ fn agree(scene: &Scene, ray: &Outcome, exact: &Outcome) -> Result<(), String> {
 
 /// Checks one scene both ways; `Ok(true)` when the ray cast answered.
 fn check(scene: &Scene, first_contact_only: bool, samples: &[Rat]) -> Result<bool, String> {
-    let exact = run(scene, &options(first_contact_only, false)).map_err(|e| e.to_string())?;
-    let ray = run(scene, &options(first_contact_only, true)).map_err(|e| e.to_string())?;
+    check_with(scene, first_contact_only, samples, 15, true)
+}
+
+/// [`check`] at `digits`, with or without the contact geometry.
+fn check_with(
+    scene: &Scene,
+    first_contact_only: bool,
+    samples: &[Rat],
+    digits: u32,
+    geometry: bool,
+) -> Result<bool, String> {
+    let exact = run(scene, &asking(first_contact_only, false, digits, geometry))
+        .map_err(|e| e.to_string())?;
+    let ray = run(scene, &asking(first_contact_only, true, digits, geometry))
+        .map_err(|e| e.to_string())?;
     if ray.stats.path != Path::Raycast {
         // Handed to Algorithm 1: the same answer.
         return if ray == exact {
@@ -187,9 +213,25 @@ fn check(scene: &Scene, first_contact_only: bool, samples: &[Rat]) -> Result<boo
             Err("a fallback changed the answer".into())
         };
     }
-    agree(scene, &ray, &exact)?;
-    // Independently of Algorithm 1: the static classifier between instants.
+    agree(scene, &ray, &exact, digits)?;
+    if !geometry && !ray.geometry.is_empty() {
+        return Err("geometry not asked for".into());
+    }
+    // Independently of Algorithm 1: the static classifier between instants,
+    // and at each contact's ends (entering: not overlapping at lo, not
+    // separate at hi; leaving: the reverse).
     let [t0, t1] = &scene.span;
+    let to_u = |t: &Rat| &(t - t0) / &(t1 - t0);
+    for (k, c) in ray.contacts.iter().enumerate() {
+        let (lo, hi) = (
+            static_state(scene, &to_u(&c.lo)),
+            static_state(scene, &to_u(&c.hi)),
+        );
+        let (before, after) = if k == 0 { (lo, hi) } else { (hi, lo) };
+        if before == State::Overlap || after == State::Separate {
+            return Err(format!("contact {k}: {lo:?} at lo, {hi:?} at hi"));
+        }
+    }
     for u in samples {
         let t = t0 + &(u * &(t1 - t0));
         if let Some(state) = state_at(&ray, &t) {
@@ -210,12 +252,14 @@ proptest! {
         scene in pair(),
         first in any::<bool>(),
         samples in proptest::collection::vec((1i64..1000, 1i64..1000), 4),
+        digits in prop_oneof![4 => Just(15u32), 1 => Just(0u32), 1 => Just(3u32), 1 => Just(12u32), 1 => 16u32..=19],
+        geometry in prop_oneof![3 => Just(true), 1 => Just(false)],
     ) {
         let samples: Vec<Rat> = samples
             .into_iter()
             .map(|(p, q)| Rat::from_frac(p.min(q), p.max(q) + 1))
             .collect();
-        check(&scene, first, &samples).map_err(TestCaseError::fail)?;
+        check_with(&scene, first, &samples, digits, geometry).map_err(TestCaseError::fail)?;
     }
 }
 
@@ -304,28 +348,113 @@ fn grazes_and_ends_go_to_algorithm_1() {
     assert!(first.lo <= t && t <= first.hi && first.lo < first.hi);
 }
 
-/// Numbers beyond `f64` or near its ends are handed to Algorithm 1 (or
-/// answered), never mis-answered and never a panic.
+/// Numbers beyond `f64` or near its ends are handed to Algorithm 1, and
+/// long-exponent ones within range are the ray cast's; never a wrong
+/// answer, never a panic.
 #[test]
 fn extreme_numbers_fall_back_or_agree() {
-    for (r, x) in [
-        ("1e-200", "1e-199"),
-        ("1e200", "1e201"),
-        ("1e-320", "1"),
-        ("3", "1e308"),
+    for (r, x, answers) in [
+        ("1e-200", "1e-199", false),
+        ("1e200", "1e201", false),
+        ("1e-320", "1", false),
+        ("3", "1e308", false),
+        ("1e-100", "1e-99", true),
+        ("1e100", "1e101", true),
     ] {
         let text = format!(
-            "format = 1\nspan = [\"0\", \"1\"]\n[a]\nradii = [\"{r}\", \"{r}\", \"1\"]\n\
-             [b]\nradii = [\"1\", \"{r}\", \"1\"]\n[b.motion]\nkind = \"translation\"\n\
-             center = [[\"-{x}\", \"0\", \"0\"], [\"{x}\", \"0\", \"0\"]]\n"
+            "format = 1\nspan = [\"0\", \"1\"]\n[a]\nradii = [\"{r}\", \"{r}\", \"{r}\"]\n\
+             [b]\nradii = [\"{r}\", \"{r}\", \"{r}\"]\n[b.motion]\nkind = \"translation\"\n\
+             center = [[\"-{x}\", \"{r}\", \"0\"], [\"{x}\", \"{r}\", \"0\"]]\n"
         );
         let scene = Scene::from_toml(&text).expect("valid");
         for first in [false, true] {
+            let ray = run(&scene, &options(first, true)).map(|o| o.stats.path);
             match check(&scene, first, &[]) {
-                Ok(_) => {}
+                Ok(answered) => assert_eq!(answered, answers, "{r} {x}"),
                 // The exact path's own size bound refuses both ways alike.
-                Err(e) if e.contains("bits") || e.contains("large") => {}
+                Err(e) if e.contains("bits") || e.contains("large") => {
+                    assert!(ray.is_err(), "{r} {x}: the ray cast answered {ray:?}");
+                }
                 Err(e) => panic!("{r} {x}: {e}"),
+            }
+        }
+    }
+}
+
+/// Spheres of radii 1 and 2 passing at distance `3 ± 10^(−k)` along a
+/// direction off the axes (the ray `s·d + (3 ± 10^(−k))·m`,
+/// `d = (2, 3, 6)/7`, `m = (6, 2, −3)/7`): the ray cast proves what it
+/// answers and agrees with the exact path, down to offsets it cannot
+/// resolve, which it hands on; the clear ones are its own.
+#[test]
+fn near_grazes_agree_or_go_to_algorithm_1() {
+    let mut answered = 0;
+    for k in 1..=40u32 {
+        for sign in [-1i64, 1] {
+            let eps = Rat::new(1.into(), ccd_arith::Int::pow10(k)).expect("nonzero");
+            let off = &Rat::from(3) + &(&Rat::from(sign) * &eps);
+            let d = [2, 3, 6].map(|x| Rat::from_frac(x, 7));
+            let m = [6, 2, -3].map(|x| Rat::from_frac(x, 7));
+            let at = |s: i64| -> [Rat; 3] {
+                std::array::from_fn(|i| &(&Rat::from(s) * &d[i]) + &(&off * &m[i]))
+            };
+            let scene = Scene {
+                span: [Rat::zero(), Rat::one()],
+                a: sphere(1, Bezier::constant(point(0, 0))),
+                b: sphere(2, Bezier::polynomial(vec![at(-10), at(10)])),
+            };
+            for first in [false, true] {
+                let ok = check(&scene, first, &[Rat::from_frac(1, 3), Rat::from_frac(1, 2)])
+                    .unwrap_or_else(|e| panic!("k = {k}, sign {sign}: {e}"));
+                answered += usize::from(ok);
+                assert!(
+                    ok || k > 3,
+                    "a clear pass or miss (k = {k}) is the ray cast's"
+                );
+            }
+        }
+    }
+    assert!(answered >= 24, "answered {answered} of 160");
+}
+
+/// B's centre in [`pass`]`(0, [0, 1])` at time `t`: `(−10 + 20t, 0, 0)`.
+fn point_at(t: &Rat) -> [Rat; 3] {
+    [
+        &Rat::from(-10) + &(&Rat::from(20) * t),
+        Rat::zero(),
+        Rat::zero(),
+    ]
+}
+
+/// Entries and exits close to the ends of the span: a clean pass on spans
+/// that end `10^(−k)` after its entry or before its exit, or start
+/// `10^(−k)` before either.
+#[test]
+fn crossings_near_the_ends_agree_or_go_to_algorithm_1() {
+    let whole = pass(0, [Rat::zero(), Rat::one()]);
+    let out = run(&whole, &options(false, true)).expect("runs");
+    assert_eq!(out.stats.path, Path::Raycast);
+    let (entry, exit) = (out.contacts[0].midpoint(), out.contacts[1].midpoint());
+    for k in [2u32, 8, 14, 15, 16, 20] {
+        let eps = Rat::new(1.into(), ccd_arith::Int::pow10(k)).expect("nonzero");
+        for span in [
+            [Rat::zero(), &entry + &eps],
+            [&entry - &eps, Rat::one()],
+            [Rat::zero(), &exit - &eps],
+            [&exit - &eps, Rat::one()],
+        ] {
+            // The same motion on the shorter span.
+            let scene = Scene {
+                span: span.clone(),
+                b: sphere(
+                    2,
+                    Bezier::polynomial(vec![point_at(&span[0]), point_at(&span[1])]),
+                ),
+                ..whole.clone()
+            };
+            for first in [false, true] {
+                check(&scene, first, &[Rat::from_frac(1, 3)])
+                    .unwrap_or_else(|e| panic!("k = {k}, span {span:?}: {e}"));
             }
         }
     }

@@ -170,14 +170,16 @@ def samples_inside(intervals, n=FCL_SAMPLES):
 
 def speed_table(binary, root, paths, reps):
     """Our median library-call times (µs) per scene file name, from
-    `examples/speed.rs`: {name: (exact total, exact first contact)}."""
+    `examples/speed.rs`: {name: (exact total, exact first contact,
+    --raycast total, --raycast first contact, the path that answered
+    --raycast: "raycast", or "exact" where it handed the query on)}."""
     out = subprocess.run(
         [binary, "--reps", str(reps), *paths], cwd=root, capture_output=True, text=True, check=True
     )
     rows = {}
     for line in out.stdout.splitlines()[1:]:
         cols = line.split("\t")
-        rows[cols[0]] = (float(cols[1]), float(cols[2]))
+        rows[cols[0]] = (float(cols[1]), float(cols[2]), float(cols[8]), float(cols[9]), cols[10])
     return rows
 
 
@@ -312,6 +314,9 @@ def measure(args):
                 "truth": truth,
                 "exact_us": ours[name][0],
                 "first_us": ours[name][1],
+                "ray_us": ours[name][2],
+                "ray_first_us": ours[name][3],
+                "ray_path": ours[name][4],
                 "quantity": quantity,
                 "degree": len(coeffs) - 1,
                 "n_roots": n_roots,
@@ -362,6 +367,9 @@ def flint_only(args, exclude):
                 "scene": name,
                 "exact_us": ours[name][0],
                 "first_us": ours[name][1],
+                "ray_us": ours[name][2],
+                "ray_first_us": ours[name][3],
+                "ray_path": ours[name][4],
                 "quantity": quantity,
                 "degree": len(coeffs) - 1,
                 "bits": max(abs(c).bit_length() for c in coeffs),
@@ -422,7 +430,13 @@ def summary_table(rows):
         f"| ours, exact first contact | {fmt_us(med('first_us'))} µs |",
         f"| FLINT `complex_roots` of sr0 alone (of sr11 on the "
         f"{sum(1 for r in line if r['quantity'] == 'sr11')} scenes where sr0 ≡ 0) | {fmt_us(med('flint_us'))} µs |",
+        f"| ours, `--raycast` total (answered by the ray cast: "
+        f"{sum(1 for r in line if r['ray_path'] == 'raycast')} of {len(line)}; the rest by the exact path) "
+        f"| {fmt_us(med('ray_us'))} µs |",
+        f"| ours, `--raycast` first contact | {fmt_us(med('ray_first_us'))} µs |",
         f"| FCL naive CCD, 100 samples | {fmt_us(med('fcl_us'))} µs |",
+        f"| ours `--raycast` total / FCL | {ratio('ray_us', 'fcl_us'):.2f}× |",
+        f"| ours `--raycast` first contact / FCL | {ratio('ray_first_us', 'fcl_us'):.2f}× |",
         f"| FLINT / ours exact total (median of per-scene ratios) | {ratio('flint_us', 'exact_us'):.1f}× |",
         f"| FLINT / ours exact first contact | {ratio('flint_us', 'first_us'):.1f}× |",
         f"| ours exact total / FCL | {ratio('exact_us', 'fcl_us'):.1f}× |",
@@ -450,9 +464,9 @@ def scene_table(rows):
     """One row per scene."""
     out = [
         "| scene | ours | first contact (u) | non-separate length (u) | ours exact µs | ours first µs "
-        "| FLINT µs (poly, deg, roots) | FLINT / exact | FCL µs | FCL says | FCL toc − first "
-        "| samples in overlap |",
-        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
+        "| `--raycast` µs (total / first) | FLINT µs (poly, deg, roots) | FLINT / exact | FCL µs | FCL says "
+        "| FCL toc − first | samples in overlap |",
+        "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
     ]
     for r in rows:
         t = r["truth"]
@@ -468,7 +482,9 @@ def scene_table(rows):
             dt = f"{r['fcl_toc'] - t['first']:+.2e}"
         out.append(
             f"| {r['scene']} | {truth_word(t)} | {first} | {hit} | {fmt_us(r['exact_us'])} "
-            f"| {fmt_us(r['first_us'])} | {fmt_us(r['flint_us'])} ({r['quantity']}, {r['degree']}, {r['n_roots']}) "
+            f"| {fmt_us(r['first_us'])} "
+            f"| {fmt_us(r['ray_us'])} / {fmt_us(r['ray_first_us'])}{'' if r['ray_path'] == 'raycast' else ' (exact)'} "
+            f"| {fmt_us(r['flint_us'])} ({r['quantity']}, {r['degree']}, {r['n_roots']}) "
             f"| {r['flint_us'] / r['exact_us']:.1f}× | {fmt_us(r['fcl_us'])} | {fcl_says} | {dt} "
             f"| {r['inside']} |"
         )

@@ -21,6 +21,10 @@ pub struct Runs {
     pub float: bool,
     /// `--first-contact`, whose first contact must meet the full run's.
     pub first_contact: bool,
+    /// `--raycast` (and `--raycast --first-contact` with `first_contact`):
+    /// the ray cast's answer must agree with the exact one, and a query
+    /// it hands on must come back byte-identical.
+    pub raycast: bool,
 }
 
 /// How a scene fared.
@@ -467,6 +471,52 @@ pub fn scratch(k: &str) -> PathBuf {
     dir.join(format!("{k}.toml"))
 }
 
+/// The `--raycast` run `ray` against the same query without it
+/// (`plain`, answered): where the ray cast answered (`stats.branch`
+/// `"raycast"`), the same states, verdict and number of contacts, and
+/// every instant meeting the plain one; elsewhere the same bytes.
+fn raycast_agrees(ray: &Run, plain: &Run, path: &Path) -> Result<(), Failure> {
+    status_ok(ray, path, "raycast")?;
+    if ray.code != Some(0) {
+        return Err("raycast: refused a query the exact path answered".into());
+    }
+    let (r, p): (Value, Value) = match (
+        serde_json::from_str(&ray.stdout),
+        serde_json::from_str(&plain.stdout),
+    ) {
+        (Ok(r), Ok(p)) => (r, p),
+        _ => return Err("raycast: output is not JSON".into()),
+    };
+    if r["stats"]["branch"] != "raycast" {
+        return if ray.stdout == plain.stdout {
+            Ok(())
+        } else {
+            Err("raycast: a query handed on came back changed".into())
+        };
+    }
+    let (_, rs) = timeline(&r).map_err(|e| format!("raycast: {e}"))?;
+    let (_, ps) = timeline(&p)?;
+    let meet = |a: &Time, b: &Time| a.lo <= b.hi && b.lo <= a.hi;
+    let same = rs.len() == ps.len()
+        && rs
+            .iter()
+            .zip(&ps)
+            .all(|(a, b)| a.state == b.state && meet(&a.start, &b.start) && meet(&a.end, &b.end))
+        && r["collision_free"] == p["collision_free"]
+        && r["complete"] == p["complete"]
+        && r["certified"] == Value::Bool(true)
+        && r["contacts"].as_array().map(Vec::len) == p["contacts"].as_array().map(Vec::len);
+    if same {
+        Ok(())
+    } else {
+        Err(format!(
+            "raycast: {} disagrees with the exact run {}",
+            cut(&ray.stdout, 1500),
+            cut(&plain.stdout, 1500)
+        ))
+    }
+}
+
 /// Every check on scene `text` (written to `path`), each run of the binary
 /// bounded by `bound`; `pick` chooses the instants compared.
 pub fn check(
@@ -527,6 +577,20 @@ pub fn check(
         };
         if !meet {
             return Err(format!("--first-contact gives {b}, the full run {a}"));
+        }
+    }
+    if runs.raycast {
+        let mut modes = vec![(vec!["--json", "--raycast"], &exact)];
+        let fc = if runs.first_contact {
+            Some(run(path, &["--json", "--first-contact"], bound)?)
+        } else {
+            None
+        };
+        if let Some(fc) = &fc {
+            modes.push((vec!["--json", "--raycast", "--first-contact"], fc));
+        }
+        for (args, plain) in modes {
+            raycast_agrees(&run(path, &args, bound)?, plain, path)?;
         }
     }
     if !rational {

@@ -14,7 +14,9 @@
 //!   placements by de Casteljau over ℚ) at rational instants inside its
 //!   segments; one mutant in four is also run with `--arithmetic float`
 //!   (status and bound only) and one in four with `--first-contact` (its
-//!   first contact must meet the full run's).
+//!   first contact must meet the full run's); every other one also with
+//!   `--raycast` (its answer must agree with the exact one, or be it byte
+//!   for byte where the ray cast hands the query on).
 //!
 //! Environment (see docs/fuzzing.md):
 //!
@@ -180,6 +182,8 @@ fn mutants_of_the_shipped_scenes() {
         let runs = Runs {
             float: rng.chance(1, 4),
             first_contact: rng.chance(1, 4),
+            // Not drawn from `rng`: each case keeps its mutant and samples.
+            raycast: case.is_multiple_of(2),
         };
         let label = format!("seed-{}-case-{case}", cfg.seed);
         let t = Instant::now();
@@ -233,6 +237,7 @@ fn replay(dir: &str, bound: Bound) {
         let runs = Runs {
             float: true,
             first_contact: true,
+            raycast: true,
         };
         // The instants compared vary with the file, deterministically.
         let mut rng = Rng::for_case(k as u64, 0);

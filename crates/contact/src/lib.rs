@@ -473,9 +473,16 @@ pub(crate) fn times_point<S: RingOps, const R: usize>(q: &Mat4<S>, x: &[S]) -> [
 }
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
-    (0..N)
-        .max_by(|&i, &j| v[i].estimate().abs().total_cmp(&v[j].estimate().abs()))
-        .unwrap_or(0)
+    let estimates = v.each_ref().map(|x| x.estimate().abs());
+    if estimates.iter().all(|e| e.is_finite()) {
+        return (0..N)
+            .max_by(|&i, &j| estimates[i].total_cmp(&estimates[j]))
+            .unwrap_or(0);
+    }
+    // Beyond f64 (coordinates of 1e100 square past it): the exact ends.
+    let magnitude = |x: &S| x.bounds().map(|(lo, hi)| lo.abs().max(hi.abs()));
+    let m = v.each_ref().map(magnitude);
+    (0..N).max_by(|&i, &j| m[i].cmp(&m[j])).unwrap_or(0)
 }
 
 /// `f` of each element, `None` if any is.

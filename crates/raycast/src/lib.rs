@@ -77,7 +77,7 @@ use verify::Crossing;
 pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     let fine = Line::<DwBall>::of(&scene.a, &scene.b)?;
     let line = fine.enclosed();
-    let f = line.mid();
+    let f = line.mid().unit_sized();
     let apart = || Some(Answer::Apart.outcome(scene, options));
     let (entry, exit) = match search::guess(&f)? {
         Guess::Misses(n) => {

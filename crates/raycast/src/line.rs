@@ -45,7 +45,7 @@ fn straight(body: &Body) -> Option<([&[Rat; 3]; 2], &Quat)> {
             orientation,
         } if center.weights.is_none() && center.degree() <= 1 => {
             let p = &center.points;
-            Some(([&p[0], p.last()?], orientation))
+            Some(([p.first()?, p.last()?], orientation))
         }
         _ => None,
     }
@@ -144,6 +144,24 @@ impl Line<Interval> {
     /// The midpoints: the `f64` problem the search runs on.
     pub fn mid(&self) -> Line<f64> {
         self.map(|i| i.mid())
+    }
+}
+
+impl Line<f64> {
+    /// The same ray with lengths divided by the largest radius (shape
+    /// matrices by its square): the same normals and instants, with the
+    /// search's products (a 3×3 determinant is of degree 6 in lengths) far
+    /// from `f64`'s ends for bodies of `10^(±100)`.
+    pub fn unit_sized(&self) -> Line<f64> {
+        let s = self.radii[0];
+        let mut l = self.clone();
+        l.pa = l.pa.map(|r| r.map(|x| x / (s * s)));
+        l.pb = l.pb.map(|r| r.map(|x| x / (s * s)));
+        for x in [&mut l.c0, &mut l.v, &mut l.a0, &mut l.da] {
+            *x = x.map(|c| c / s);
+        }
+        l.radii = self.radii.map(|r| r / s);
+        l
     }
 }
 

@@ -25,6 +25,8 @@ pub trait Scalar:
     fn rat(x: &Rat) -> Self;
     /// Whether the value is finite (an enclosure that says something).
     fn known(self) -> bool;
+    /// Whether the value is proven `> 0` (for `f64`: merely is).
+    fn positive(self) -> bool;
 }
 
 impl Scalar for f64 {
@@ -43,6 +45,9 @@ impl Scalar for f64 {
     fn known(self) -> bool {
         self.is_finite()
     }
+    fn positive(self) -> bool {
+        self > 0.0
+    }
 }
 
 impl Scalar for Interval {
@@ -60,6 +65,9 @@ impl Scalar for Interval {
     }
     fn known(self) -> bool {
         self.is_finite()
+    }
+    fn positive(self) -> bool {
+        self.lo > 0.0
     }
 }
 
@@ -81,6 +89,9 @@ impl Scalar for DwBall {
     fn known(self) -> bool {
         self.is_known()
     }
+    fn positive(self) -> bool {
+        self.sign() == Some(1)
+    }
 }
 
 /// `a·b`.
@@ -91,6 +102,15 @@ pub fn dot<T: Scalar>(a: &V3<T>, b: &V3<T>) -> T {
 /// `m·x`.
 pub fn apply<T: Scalar>(m: &M3<T>, x: &V3<T>) -> V3<T> {
     std::array::from_fn(|i| dot(&m[i], x))
+}
+
+/// `a × b`.
+pub fn cross<T: Scalar>(a: &V3<T>, b: &V3<T>) -> V3<T> {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 /// `a + s·b`.

@@ -11,6 +11,9 @@ use crate::support::{jet, support_k};
 const MAX_STEPS: usize = 40;
 /// A step shorter than this (on a unit normal) ends the search.
 const CONVERGED: f64 = 1e-12;
+/// A last step shorter than this still returns the normal after
+/// [`MAX_STEPS`] ([`polish`]).
+const NOISE_FLOOR: f64 = 1e-6;
 
 /// Where the ray meets an outer ellipsoid of `K`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,7 +30,8 @@ pub enum Guess {
     Misses(V3<f64>),
 }
 
-fn unit(x: &V3<f64>) -> Option<V3<f64>> {
+/// `x/|x|` (`None` for zero or a non-finite length).
+pub fn unit(x: &V3<f64>) -> Option<V3<f64>> {
     let n = dot(x, x).sqrt();
     (n > 0.0 && n.is_finite()).then(|| x.map(|c| c / n))
 }
@@ -129,10 +133,13 @@ pub fn inverse2(m: &[[f64; 2]; 2]) -> Option<[[f64; 2]; 2]> {
 /// Newton's method on `∇φ = 0` from `n`, keeping `sign(n·v) = side`
 /// (`−1`: the entry, where `φ` has its maximum; `+1`: the exit, its
 /// minimum). Where the reduced Hessian is not definite with the sign of
-/// that extremum the step follows the gradient instead; steps are at most
-/// `1/2` long. `None` when the side is left or no step converges.
+/// that extremum the step follows the gradient instead; a step goes at
+/// most half the way to the side's edge `n·v = 0` (and at most `1/2`).
+/// `None` when the side is left, or when the steps neither converge nor
+/// end shorter than `NOISE_FLOOR` (10⁻⁶).
 pub fn polish(line: &Line<f64>, n: &V3<f64>, side: f64) -> Option<V3<f64>> {
     let mut n = unit(n)?;
+    let mut last = f64::INFINITY;
     for _ in 0..MAX_STEPS {
         let j = jet(line, &n);
         if j.d.is_nan() || j.d * side <= 0.0 || !j.phi.is_finite() {
@@ -153,15 +160,22 @@ pub fn polish(line: &Line<f64>, n: &V3<f64>, side: f64) -> Option<V3<f64>> {
         if !len.is_finite() {
             return None;
         }
-        if len > 0.5 {
-            w = w.map(|x| x * 0.5 / len);
+        // At most half the way to the plane `n·v = 0` (the side's edge,
+        // about |D|/|v| away), and at most 1/2.
+        let room = 0.5 * (j.d.abs() / dot(&line.v, &line.v).sqrt()).min(1.0);
+        if len > room {
+            w = w.map(|x| x * room / len);
         }
         n = unit(&axpy(&axpy(&n, w[0], &e[0]), w[1], &e[1]))?;
         if len < CONVERGED {
             return Some(n);
         }
+        last = len;
     }
-    None
+    // Near a graze f64 rounding leaves a noise floor above CONVERGED (∇φ
+    // is a cancellation divided by a small n·v): a normal that close is
+    // what the double-word steps of the proof start from.
+    (last < NOISE_FLOOR).then_some(n)
 }
 
 /// A plane parallel to the ray that keeps it outside `K`, for a ray that

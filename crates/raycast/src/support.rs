@@ -43,13 +43,17 @@ pub struct Jet<T> {
     pub hess: M3<T>,
 }
 
-/// `h(n)`, `∇h(n)` and `∇²h(n)` of the body with shape matrix `p`.
-fn support<T: Scalar>(p: &M3<T>, n: &V3<T>) -> (T, V3<T>, M3<T>) {
+/// `h(n)`, `∇h(n)` and `1/h(n)` of the body with shape matrix `p`.
+fn support<T: Scalar>(p: &M3<T>, n: &V3<T>) -> (T, V3<T>, T) {
     let pn = apply(p, n);
     let h = dot(n, &pn).root();
     let inv = T::of(1.0).over(h);
-    let g = pn.map(|x| x * inv);
-    (h, g, symmetric(|i, j| (p[i][j] - g[i] * g[j]) * inv))
+    (h, pn.map(|x| x * inv), inv)
+}
+
+/// `∇²h(n) = (P − ∇h·∇hᵀ)/h` from [`support`]'s `∇h` and `1/h`.
+fn curvature<T: Scalar>(p: &M3<T>, g: &V3<T>, inv: T) -> M3<T> {
+    symmetric(|i, j| (p[i][j] - g[i] * g[j]) * inv)
 }
 
 /// `∇h(n) = P·n / h(n)`: the point (around the centre) of the body with
@@ -58,25 +62,51 @@ pub fn support_point<T: Scalar>(p: &M3<T>, n: &V3<T>) -> V3<T> {
     support(p, n).1
 }
 
+/// `∇h_K(n) = ∇h_A(n) + ∇h_B(n)`: the point of `K` whose outward normal
+/// is `n`.
+pub fn boundary_point<T: Scalar>(line: &Line<T>, n: &V3<T>) -> V3<T> {
+    let (ga, gb) = (support(&line.pa, n).1, support(&line.pb, n).1);
+    std::array::from_fn(|i| ga[i] + gb[i])
+}
+
 /// The support functions of both bodies, summed: `h_K`, `∇h_K`, `∇²h_K`.
 pub fn support_k<T: Scalar>(line: &Line<T>, n: &V3<T>) -> (T, V3<T>, M3<T>) {
-    let (ha, ga, sa) = support(&line.pa, n);
-    let (hb, gb, sb) = support(&line.pb, n);
+    let (ha, ga, ia) = support(&line.pa, n);
+    let (hb, gb, ib) = support(&line.pb, n);
+    let (sa, sb) = (curvature(&line.pa, &ga, ia), curvature(&line.pb, &gb, ib));
     let g = std::array::from_fn(|i| ga[i] + gb[i]);
     let s = std::array::from_fn(|i| std::array::from_fn(|j| sa[i][j] + sb[i][j]));
     (ha + hb, g, s)
+}
+
+/// `φ`, `n·v` and `∇φ` at `n` (the [`Jet`] without its Hessian, which
+/// is zero here), from `h_K` and `∇h_K`.
+fn first<T: Scalar>(line: &Line<T>, n: &V3<T>, h: T, gh: &V3<T>) -> (Jet<T>, T) {
+    let d = dot(n, &line.v);
+    let inv = T::of(1.0).over(d);
+    let phi = (h - dot(n, &line.c0)) * inv;
+    let grad: V3<T> = std::array::from_fn(|i| (gh[i] - line.c0[i] - phi * line.v[i]) * inv);
+    let hess = [[T::of(0.0); 3]; 3];
+    (Jet { phi, d, grad, hess }, inv)
+}
+
+/// `φ`, `n·v` and `∇φ` at `n`, without the Hessian (left zero): what
+/// the double-word evaluation at the search's normal needs.
+pub fn slope<T: Scalar>(line: &Line<T>, n: &V3<T>) -> Jet<T> {
+    let (ha, ga, _) = support(&line.pa, n);
+    let (hb, gb, _) = support(&line.pb, n);
+    let g = std::array::from_fn(|i| ga[i] + gb[i]);
+    first(line, n, ha + hb, &g).0
 }
 
 /// The [`Jet`] of `φ` at `n` (each entry enclosed when `T` is an
 /// interval type and `n` a box).
 pub fn jet<T: Scalar>(line: &Line<T>, n: &V3<T>) -> Jet<T> {
     let (h, gh, hh) = support_k(line, n);
-    let d = dot(n, &line.v);
-    let inv = T::of(1.0).over(d);
-    let phi = (h - dot(n, &line.c0)) * inv;
-    let grad: V3<T> = std::array::from_fn(|i| (gh[i] - line.c0[i] - phi * line.v[i]) * inv);
-    let hess = symmetric(|i, j| (hh[i][j] - grad[i] * line.v[j] - line.v[i] * grad[j]) * inv);
-    Jet { phi, d, grad, hess }
+    let (mut j, inv) = first(line, n, h, &gh);
+    let (grad, v) = (j.grad, &line.v);
+    j.hess = symmetric(|i, k| (hh[i][k] - grad[i] * v[k] - v[i] * grad[k]) * inv);
+    j
 }
 
 /// `n·c(u) − h_K(n)`: positive when the ray's point at `u` is strictly

@@ -4,23 +4,27 @@
 //! (hence the entry or the exit instant, and the contact point).
 
 use crate::line::{enclosure, Line};
-use crate::scalar::{axpy, dot, lift, V3};
-use crate::search::{basis, inverse2, reduced};
-use crate::support::{clearance, jet, support_point};
+use crate::scalar::{axpy, cross, dot, form, lift, Scalar, V3};
+use crate::search::{basis, inverse2, unit};
+use crate::support::{boundary_point, clearance, slope, support_k, support_point};
 use ccd_arith::{DwBall, Interval};
 
 /// Box radii tried by [`crossing`], each 16 times the last.
 const TRIES: usize = 4;
+/// Newton steps from the double-word `G(0)` after a test that fails or
+/// encloses the instant wider than [`narrow`].
+const REFINE_STEPS: usize = 4;
 
-/// Whether the plane of `n` proves the bodies apart over the whole span:
+/// Whether the plane of `n` proves the bodies apart over the whole span
+/// (in `f64` intervals, or in double words for a near miss):
 /// the ray's points at `u = 0` and `u = 1` are both strictly beyond it
 /// (`n·c(u) > h_K(n)`), hence, the condition being linear in `u`, every
 /// point between them, and `K` lies on the other side.
-pub fn apart(line: &Line<Interval>, n: &V3<f64>) -> bool {
+pub fn apart<T: Scalar>(line: &Line<T>, n: &V3<f64>) -> bool {
     let n = lift(n);
     [0.0, 1.0]
         .into_iter()
-        .all(|u| clearance(line, &n, Interval::point(u)).lo > 0.0)
+        .all(|u| clearance(line, &n, T::of(u)).positive())
 }
 
 /// A proven crossing of `∂K` by the ray: the entry or the exit.
@@ -35,78 +39,163 @@ pub struct Crossing {
     pub point: V3<Interval>,
 }
 
-/// `n̂ + w₀·e₀ + w₁·e₁` for an interval `w`.
-fn offset(n: &V3<f64>, e: &[V3<f64>; 2], w: &[Interval; 2]) -> V3<Interval> {
-    let n = lift::<Interval>(n);
+/// `n̂ + w₀·e₀ + w₁·e₁` for a box `w` (in `T`).
+fn offset<T: Scalar>(n: &V3<f64>, e: &[V3<f64>; 2], w: &[T; 2]) -> V3<T> {
+    let n = lift::<T>(n);
     axpy(&axpy(&n, w[0], &lift(&e[0])), w[1], &lift(&e[1]))
 }
 
 /// The crossing on `side` (`−1`: the entry, where `n·v < 0`; `+1`: the
 /// exit) proven near the search's normal `n` (unit), or `None`.
 ///
-/// With `E = basis(n)`, `G(w) = Eᵀ∇φ(n + Ew)` vanishes exactly at the
-/// stationary normals of `φ` near `n` (`∇φ ⟂ n` by homogeneity). Krawczyk's
-/// operator `K(W) = −Y·G(0) + (I − Y·J(W))·W` over the box `W = [−r, r]²`,
-/// `J = Eᵀ∇²φE` and `Y ≈ J(0)⁻¹`, lying inside `W` proves one zero `w*` of
-/// `G` in `K(W)` (Krawczyk 1969; Moore, Kearfott & Cloud, *Introduction to
-/// Interval Analysis*, §8.2); `n·v` keeping the sign of `side` over `W`
-/// makes `n* = n + Ew*` the entry (or the exit) normal ([`crate::support`]),
-/// and the mean value form `φ(n*) ∈ φ(n) + ∇φ(n + EW)·Ew*` encloses the
-/// instant. `G(0)` and `φ(n)` are evaluated in double words (`fine`: the
-/// same ray), since in `f64` intervals their cancellations (`∇h_K − c₀ −
-/// φ·v`, `h_K − n·c₀`) leave them a few `10⁻¹⁵` wide, and the box (hence
-/// the contact point) and the instant as wide; the rest runs in `f64`
-/// intervals over boxes `10⁻¹⁵` small.
+/// The stationary normals of `φ` are where K's boundary point
+/// `∇h_K(n)` lies on the ray's line (`D·∇φ = ∇h_K − c₀ − φ·v` and
+/// `∇φ·n = 0`), so with `E = basis(n)` and `F = (v × a₁, v × a₂)` (two
+/// vectors exactly orthogonal to `v`, spanning `v⊥`),
+/// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` vanishes exactly at them — with no
+/// division by `D = n·v`, which near a graze is small and, in `φ`'s own
+/// derivatives, swamps an enclosure over a box with its dependency.
+/// Krawczyk's operator `K(W) = −Y·G(0) + (I − Y·J(W))·W` over the box
+/// `W = [−r, r]²`, `J = Fᵀ∇²h_K E` enclosed over it and `Y ≈ J(0)⁻¹`, lying
+/// inside `W` proves one zero `w*` of `G` in `K(W)` (Krawczyk 1969; Moore,
+/// Kearfott & Cloud, *Introduction to Interval Analysis*, §8.2); `n·v`
+/// keeping the sign of `side` over `W` makes `n* = n + Ew*` the entry (or
+/// the exit) normal ([`crate::support`]), and the mean value form
+/// `φ(n*) ∈ φ(n) + ∇φ(n + EW)·Ew*` encloses the instant.
+///
+/// `G(0)` and `φ(n)` are cancellations, evaluated in double words (`fine`:
+/// the same ray); in `f64` intervals they leave the instant and the box a
+/// few `10⁻¹⁵` wide. Near a graze the `f64` search stops short of `n*`
+/// (its gradient is only as good as `f64` allows), and the test fails or
+/// encloses the instant wide: up to four (`REFINE_STEPS`) Newton steps from the
+/// double-word `G(0)` then move `n` closer and the test runs again.
 pub fn crossing(
     line: &Line<Interval>,
     fine: &Line<DwBall>,
     n: &V3<f64>,
     side: f64,
 ) -> Option<Crossing> {
-    let e = basis(n);
-    let j0 = jet(fine, &lift(n));
-    let g0 = e.map(|ei| enclosure(dot(&lift(&ei), &j0.grad)));
-    let (_, h) = reduced(
-        &j0.grad.map(|x| x.hi),
-        &j0.hess.map(|r| r.map(|x| x.hi)),
-        &e,
-    );
-    let y = inverse2(&h)?.map(|r| r.map(Interval::point));
-    let yg: [Interval; 2] = std::array::from_fn(|i| y[i][0] * g0[0] + y[i][1] * g0[1]);
-    let mut r = (4.0
-        * yg.iter()
-            .map(|x| x.lo.abs().max(x.hi.abs()))
-            .fold(0.0, f64::max))
-    .max(1e-15);
-    for _ in 0..TRIES {
-        let w = [Interval::new(-r, r); 2];
-        let jw = jet(line, &offset(n, &e, &w));
-        if jw.d.sign() != Some(side as i32) {
-            return None;
+    let system = System::new(line, fine)?;
+    let mut n = *n;
+    for step in 0..=REFINE_STEPS {
+        let newton = system.newton(&n, step > 0)?;
+        match system.krawczyk(&n, &newton, side) {
+            Some(c) if step == REFINE_STEPS || c.u.width() <= narrow(&c.u) => return Some(c),
+            _ if step == REFINE_STEPS => return None,
+            _ => {}
         }
-        let ew = e.map(|ei| lift::<Interval>(&ei));
-        let jj: [[Interval; 2]; 2] = std::array::from_fn(|i| {
-            std::array::from_fn(|k| dot(&ew[i], &crate::scalar::apply(&jw.hess, &ew[k])))
-        });
-        let k: [Interval; 2] = std::array::from_fn(|i| {
-            (0..2).fold(-yg[i], |s, c| {
-                let yj = y[i][0] * jj[0][c] + y[i][1] * jj[1][c];
-                let id = Interval::point(if i == c { 1.0 } else { 0.0 });
-                s + (id - yj) * w[c]
-            })
-        });
-        if k.iter().all(|x| x.lo > -r && x.hi < r) {
-            let normal = offset(n, &e, &k);
-            let step: V3<Interval> = std::array::from_fn(|i| ew[0][i] * k[0] + ew[1][i] * k[1]);
-            let u = enclosure(j0.phi) + dot(&jw.grad, &step);
-            let centre = axpy(&line.a0, u, &line.da);
-            let s = support_point(&line.pa, &normal);
-            let point = std::array::from_fn(|i| centre[i] + s[i]);
-            return Some(Crossing { u, normal, point });
-        }
-        r *= 16.0;
+        let [e, yg] = [newton.e, newton.yg.map(|x| [x.mid(); 3])];
+        n = unit(&axpy(&axpy(&n, -yg[0][0], &e[0]), -yg[1][0], &e[1]))?;
     }
     None
+}
+
+/// About two ulps of the instant: an enclosure no wider needs no further
+/// Newton step.
+fn narrow(u: &Interval) -> f64 {
+    (4.0 * f64::EPSILON * u.hi.abs()).max(1e-17)
+}
+
+/// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` of one ray ([`crossing`]).
+struct System<'a> {
+    line: &'a Line<Interval>,
+    fine: &'a Line<DwBall>,
+    f: Line<f64>,
+    /// `F`, two vectors spanning `v⊥` (`v × a` for a rounded basis `a` of
+    /// it), enclosed in intervals and in double words.
+    fv: [V3<Interval>; 2],
+    fd: [V3<DwBall>; 2],
+}
+
+/// What a Newton step at a normal `n` needs: `E = basis(n)`, `Y ≈ J⁻¹`
+/// and `Y·G(0)` (enclosed).
+struct Newton {
+    e: [V3<f64>; 2],
+    y: [[Interval; 2]; 2],
+    yg: [Interval; 2],
+}
+
+impl<'a> System<'a> {
+    fn new(line: &'a Line<Interval>, fine: &'a Line<DwBall>) -> Option<System<'a>> {
+        let f = line.mid();
+        // `v × a` for two f64 vectors `a` across `v`: exactly orthogonal
+        // to the true `v` (enclosed with it), which a rounded basis of
+        // `v⊥` is not — near a graze its tilt of an ulp moves the zero.
+        // Scaled by a power of two (exactly) to `|v × a| ≈ 1`, so that
+        // `J` and its inverse stay far from f64's ends for any size.
+        let size = dot(&f.v, &f.v).sqrt();
+        let scale = 2f64.powi(-(size.log2().round() as i32));
+        let across = basis(&unit(&f.v)?).map(|a| a.map(|x| x * scale));
+        Some(System {
+            line,
+            fine,
+            f,
+            fv: across.map(|a| cross(&line.v, &lift(&a))),
+            fd: across.map(|a| cross(&fine.v, &lift(&a))),
+        })
+    }
+
+    /// `G(0)` in double words at `n`, and `Y` from the `f64` Hessian of
+    /// `h_K` (`precise`: from the double-word one, so that repeated steps
+    /// converge quadratically near a graze).
+    fn newton(&self, n: &V3<f64>, precise: bool) -> Option<Newton> {
+        let e = basis(n);
+        let g: V3<DwBall> = boundary_point(self.fine, &lift(n));
+        let gap: V3<DwBall> = std::array::from_fn(|i| g[i] - self.fine.c0[i]);
+        let g0 = self.fd.map(|fi| enclosure(dot(&fi, &gap)));
+        let hess = if precise {
+            support_k(self.fine, &lift(n)).2.map(|r| r.map(|x| x.hi))
+        } else {
+            support_k(&self.f, n).2
+        };
+        let fm = self.fv.map(|x| x.map(|i| i.mid()));
+        let jm = fm.map(|fi| e.map(|ej| form(&fi, &hess, &ej)));
+        let y = inverse2(&jm)?.map(|r| r.map(Interval::point));
+        let yg = std::array::from_fn(|i| y[i][0] * g0[0] + y[i][1] * g0[1]);
+        Some(Newton { e, y, yg })
+    }
+
+    /// Krawczyk's test around `n` (boxes of [`TRIES`] radii from
+    /// `4·|Y·G(0)|`), and the crossing it proves.
+    fn krawczyk(&self, n: &V3<f64>, newton: &Newton, side: f64) -> Option<Crossing> {
+        let Newton { e, y, yg } = newton;
+        let line = self.line;
+        let ew = e.map(|ei| lift::<Interval>(&ei));
+        let widest = yg
+            .iter()
+            .map(|x| x.lo.abs().max(x.hi.abs()))
+            .fold(0.0, f64::max);
+        let mut r = (4.0 * widest).max(1e-17);
+        for _ in 0..TRIES {
+            let w = [Interval::new(-r, r); 2];
+            let boxed = offset(n, e, &w);
+            if dot(&boxed, &line.v).sign() != Some(side as i32) {
+                return None;
+            }
+            let hw = support_k(line, &boxed).2;
+            let jj: [[Interval; 2]; 2] =
+                std::array::from_fn(|i| std::array::from_fn(|k| form(&self.fv[i], &hw, &ew[k])));
+            let k: [Interval; 2] = std::array::from_fn(|i| {
+                (0..2).fold(-yg[i], |s, c| {
+                    let yj = y[i][0] * jj[0][c] + y[i][1] * jj[1][c];
+                    let id = Interval::point(if i == c { 1.0 } else { 0.0 });
+                    s + (id - yj) * w[c]
+                })
+            });
+            if k.iter().all(|x| x.lo > -r && x.hi < r) {
+                let normal = offset(n, e, &k);
+                let step: V3<Interval> = std::array::from_fn(|i| ew[0][i] * k[0] + ew[1][i] * k[1]);
+                let at = slope(self.fine, &lift(n)).phi;
+                let u = enclosure(at) + dot(&slope(line, &boxed).grad, &step);
+                let centre = axpy(&line.a0, u, &line.da);
+                let s = support_point(&line.pa, &normal);
+                let point = std::array::from_fn(|i| centre[i] + s[i]);
+                return Some(Crossing { u, normal, point });
+            }
+            r *= 16.0;
+        }
+        None
+    }
 }
 
 #[cfg(test)]
