@@ -69,16 +69,24 @@ MAX_DIGITS = 1000
 """The largest ``digits`` accepted (as the CLI's ``--digits``)."""
 
 
-def _options(first_contact: Any = False, digits: Any = 15, arithmetic: Any = "exact", geometry: Any = True) -> dict:
+def _options(
+    first_contact: Any = False, digits: Any = 15, arithmetic: Any = "exact", geometry: Any = True, raycast: Any = False
+) -> dict:
     """The query options, checked; a bad one raises ``ValueError`` naming it."""
-    for name, value in (("first_contact", first_contact), ("geometry", geometry)):
+    for name, value in (("first_contact", first_contact), ("geometry", geometry), ("raycast", raycast)):
         if not isinstance(value, bool):
             raise ValueError(f"option `{name}`: expected True or False, found {value!r}")
     if isinstance(digits, bool) or not isinstance(digits, int) or not 0 <= digits <= MAX_DIGITS:
         raise ValueError(f"option `digits`: expected a whole number from 0 to {MAX_DIGITS}, found {digits!r}")
     if arithmetic not in ("exact", "float"):
         raise ValueError(f'option `arithmetic`: expected "exact" or "float", found {arithmetic!r}')
-    return {"first_contact": first_contact, "digits": digits, "arithmetic": arithmetic, "geometry": geometry}
+    return {
+        "first_contact": first_contact,
+        "digits": digits,
+        "arithmetic": arithmetic,
+        "geometry": geometry,
+        "raycast": raycast,
+    }
 
 
 def _scene(item: Any) -> Scene:
@@ -101,6 +109,7 @@ def collide(
     digits: int = 15,
     arithmetic: str = "exact",
     geometry: bool = True,
+    raycast: bool = False,
 ) -> Result:
     """When do the moving ellipsoids ``a`` and ``b`` touch or overlap over
     ``span = (t0, t1)``?
@@ -114,6 +123,10 @@ def collide(
         arithmetic: ``"exact"`` (every answer certified) or ``"float"`` (the
             paper's f64 solver: faster, NOT certified; rational motions only).
         geometry: compute each contact's point and normal.
+        raycast: bodies that only translate along straight lines are
+            answered by a certified ray cast into their Minkowski difference
+            (microseconds; instants with float ends), the rest, and what it
+            cannot prove, by the exact path (docs/raycast.md).
 
     Returns:
         a ``Result``; ``result.to_json()`` is what ``ccd-exact --json`` prints.
@@ -123,7 +136,7 @@ def collide(
         ValueError: an option out of range.
         EffortError: the exact path's documented effort bound was reached.
     """
-    return _run(Scene(a, b, span), _options(first_contact, digits, arithmetic, geometry))
+    return _run(Scene(a, b, span), _options(first_contact, digits, arithmetic, geometry, raycast))
 
 
 def collide_toml(text: str, **options: Any) -> Result:

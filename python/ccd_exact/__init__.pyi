@@ -189,9 +189,16 @@ def collide(
     digits: int = ...,
     arithmetic: str = ...,
     geometry: bool = ...,
+    raycast: bool = ...,
 ) -> Result: ...
 def collide_toml(
-    text: str, *, first_contact: bool = ..., digits: int = ..., arithmetic: str = ..., geometry: bool = ...
+    text: str,
+    *,
+    first_contact: bool = ...,
+    digits: int = ...,
+    arithmetic: str = ...,
+    geometry: bool = ...,
+    raycast: bool = ...,
 ) -> Result: ...
 def collide_json(
     scene: Union[str, bytes, Mapping[str, Any]],
@@ -200,6 +207,7 @@ def collide_json(
     digits: int = ...,
     arithmetic: str = ...,
     geometry: bool = ...,
+    raycast: bool = ...,
 ) -> Result: ...
 def collide_many(
     pairs: Iterable[Union[Scene, Tuple[Any, ...], Mapping[str, Any]]],
@@ -209,6 +217,7 @@ def collide_many(
     digits: int = ...,
     arithmetic: str = ...,
     geometry: bool = ...,
+    raycast: bool = ...,
 ) -> List[Result]: ...
 def collide_world(
     bodies: Bodies,
@@ -219,6 +228,7 @@ def collide_world(
     digits: int = ...,
     arithmetic: str = ...,
     geometry: bool = ...,
+    raycast: bool = ...,
 ) -> WorldResult: ...
 def collide_world_toml(
     text: str,
@@ -228,4 +238,5 @@ def collide_world_toml(
     digits: int = ...,
     arithmetic: str = ...,
     geometry: bool = ...,
+    raycast: bool = ...,
 ) -> WorldResult: ...

@@ -20,7 +20,12 @@ class WorldQuery:
     def pair_html(self, k: int, title: str = "") -> str: ...
 
 def run_toml(
-    text: str, first_contact: bool = False, digits: int = 15, arithmetic: str = "exact", geometry: bool = True
+    text: str,
+    first_contact: bool = False,
+    digits: int = 15,
+    arithmetic: str = "exact",
+    geometry: bool = True,
+    raycast: bool = False,
 ) -> Query: ...
 def run_many(
     texts: List[str],
@@ -29,6 +34,7 @@ def run_many(
     digits: int = 15,
     arithmetic: str = "exact",
     geometry: bool = True,
+    raycast: bool = False,
 ) -> List[Query]: ...
 def run_world_toml(
     text: str,
@@ -37,5 +43,6 @@ def run_world_toml(
     digits: int = 15,
     arithmetic: str = "exact",
     geometry: bool = True,
+    raycast: bool = False,
 ) -> WorldQuery: ...
 def median_run_seconds(text: str, reps: int = 100) -> float: ...

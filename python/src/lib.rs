@@ -177,6 +177,7 @@ fn options(
     digits: u32,
     arithmetic: &str,
     geometry: bool,
+    raycast: bool,
 ) -> PyResult<Options> {
     let arithmetic = match arithmetic {
         "exact" => Arithmetic::Exact,
@@ -192,7 +193,7 @@ fn options(
         digits,
         arithmetic,
         contact_geometry: geometry,
-        ..Options::default()
+        raycast,
     })
 }
 
@@ -263,7 +264,7 @@ fn on_threads<T: Send>(
 
 /// Runs the scene `text` (TOML) with the GIL released.
 #[pyfunction]
-#[pyo3(signature = (text, first_contact = false, digits = 15, arithmetic = "exact", geometry = true))]
+#[pyo3(signature = (text, first_contact = false, digits = 15, arithmetic = "exact", geometry = true, raycast = false))]
 fn run_toml(
     py: Python<'_>,
     text: &str,
@@ -271,8 +272,9 @@ fn run_toml(
     digits: u32,
     arithmetic: &str,
     geometry: bool,
+    raycast: bool,
 ) -> PyResult<Query> {
-    let options = options(first_contact, digits, arithmetic, geometry)?;
+    let options = options(first_contact, digits, arithmetic, geometry, raycast)?;
     py.detach(|| answer(text, &options))
         .map_err(|f| f.into_py(py, ""))
 }
@@ -281,7 +283,7 @@ fn run_toml(
 /// core) with the GIL released; the answers come in the order given. The
 /// first failing scene (in that order) raises, its index in the message.
 #[pyfunction]
-#[pyo3(signature = (texts, threads = None, first_contact = false, digits = 15, arithmetic = "exact", geometry = true))]
+#[pyo3(signature = (texts, threads = None, first_contact = false, digits = 15, arithmetic = "exact", geometry = true, raycast = false))]
 fn run_many(
     py: Python<'_>,
     texts: Vec<String>,
@@ -290,8 +292,9 @@ fn run_many(
     digits: u32,
     arithmetic: &str,
     geometry: bool,
+    raycast: bool,
 ) -> PyResult<Vec<Query>> {
-    let options = options(first_contact, digits, arithmetic, geometry)?;
+    let options = options(first_contact, digits, arithmetic, geometry, raycast)?;
     let all = || -> Vec<Result<Query, Failure>> {
         texts.par_iter().map(|t| answer(t, &options)).collect()
     };
@@ -307,7 +310,7 @@ fn run_many(
 /// Runs the world file `text` (TOML, `[[body]]` tables) on `threads`
 /// threads (`None`: rayon's pool, one per core) with the GIL released.
 #[pyfunction]
-#[pyo3(signature = (text, threads = None, first_contact = false, digits = 15, arithmetic = "exact", geometry = true))]
+#[pyo3(signature = (text, threads = None, first_contact = false, digits = 15, arithmetic = "exact", geometry = true, raycast = false))]
 fn run_world_toml(
     py: Python<'_>,
     text: &str,
@@ -316,8 +319,9 @@ fn run_world_toml(
     digits: u32,
     arithmetic: &str,
     geometry: bool,
+    raycast: bool,
 ) -> PyResult<WorldQuery> {
-    let options = options(first_contact, digits, arithmetic, geometry)?;
+    let options = options(first_contact, digits, arithmetic, geometry, raycast)?;
     py.detach(|| on_threads(threads, || answer_world(text, &options)))
         .map_err(PyValueError::new_err)?
         .map_err(|f| f.into_py(py, ""))

@@ -88,6 +88,7 @@ def test_every_shipped_scene_gives_the_clis_json(cli, path):
         (["--first-contact"], {"first_contact": True}),
         (["--no-geometry"], {"geometry": False}),
         (["--arithmetic", "float"], {"arithmetic": "float"}),
+        (["--raycast"], {"raycast": True}),
     ],
 )
 def test_options_are_the_clis(cli, args, options):
@@ -117,3 +118,21 @@ def test_an_independent_closed_form():
     p = r.contacts[0].point  # the spheres touch at (1, 0, 0)
     assert all(p.lo[i] <= x <= p.hi[i] for i, x in enumerate((1, 0, 0)))
     assert math.isclose(r.contacts[0].approx, 4.0)
+
+
+def test_raycast_answers_a_straight_line_pass():
+    # Unit spheres, B from (-4, 1/2, 0) to (4, 1/2, 0): the ray cast answers
+    # (stats branch "raycast"), the same states and contacts as the exact
+    # path, each contact's enclosure meeting the exact one; the CLI's bytes.
+    a = ccd.Ellipsoid([1, 1, 1])
+    b = ccd.Ellipsoid([1, 1, 1], ccd.Translation([[-4, "1/2", 0], [4, "1/2", 0]]))
+    ray = ccd.collide(a, b, raycast=True)
+    exact = ccd.collide(a, b)
+    assert json.loads(ray.to_json())["stats"]["branch"] == "raycast"
+    assert json.loads(exact.to_json())["stats"]["branch"] == "sr0"
+    assert [s.state for s in ray.timeline] == [s.state for s in exact.timeline]
+    assert len(ray.contacts) == len(exact.contacts) == 2
+    for r, e in zip(ray.contacts, exact.contacts):
+        assert r.lo <= e.hi and e.lo <= r.hi
+    with pytest.raises(ValueError, match="option `raycast`"):
+        ccd.collide(a, b, raycast="yes")
