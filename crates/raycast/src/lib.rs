@@ -31,8 +31,10 @@
 //! within `10^(−digits)` of the span, the contact geometry within
 //! [`ccd_contact::Goal`]) and returns `None` otherwise — another motion
 //! kind, a ray that grazes `K` (entry and exit not separated), a crossing
-//! at `t0` or `t1` or before it, bodies that do not move apart,
-//! `--digits` beyond `f64`: the caller then runs Algorithm 1.
+//! at `t0` or `t1` or before it, bodies at rest relative to each other, a
+//! width its enclosures do not reach (`--digits` beyond about 15 unless
+//! the instants happen to be that narrow): the caller then runs
+//! Algorithm 1.
 //!
 //! ```
 //! use ccd_scene::Scene;
@@ -73,16 +75,23 @@ use verify::Crossing;
 
 /// The proven timeline of a pair that translates along straight lines,
 /// or `None` where the ray cast does not prove everything the query asks
-/// for (module docs).
+/// for (module docs), or when the scene is not valid
+/// ([`Scene::validate`]).
 pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
+    // `ccd_exact::run` has validated it; a direct caller may not have.
+    scene.validate().ok()?;
     let fine = Line::<DwBall>::of(&scene.a, &scene.b)?;
     let line = fine.enclosed();
     let f = line.mid().unit_sized();
     let apart = || Some(Answer::Apart.outcome(scene, options));
+    // A plane in f64 intervals, else (a near miss) in double words.
+    let separates = |planes: &[Option<[f64; 3]>]| {
+        let planes = || planes.iter().flatten();
+        planes().any(|n| verify::apart(&line, n)) || planes().any(|n| verify::apart(&fine, n))
+    };
     let (entry, exit) = match search::guess(&f)? {
         Guess::Misses(n) => {
-            let planes = [Some(n), search::parallel(&f, &n)];
-            return if planes.iter().flatten().any(|n| verify::apart(&line, n)) {
+            return if separates(&[Some(n), search::parallel(&f, &n)]) {
                 apart()
             } else {
                 None
@@ -100,11 +109,7 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
         (entry, exit) => {
             let [a, b] = [entry, exit].map(|n| n.unwrap_or_else(|n| n));
             let plane = search::parallel(&f, &std::array::from_fn(|i| a[i] + b[i]));
-            return if plane.is_some_and(|n| verify::apart(&line, &n)) {
-                apart()
-            } else {
-                None
-            };
+            return if separates(&[plane]) { apart() } else { None };
         }
     };
     if [entry, exit].iter().any(|n| verify::apart(&line, n)) {

@@ -257,5 +257,32 @@ mod tests {
         assert!(!apart(&spheres(3.0).enclosed(), &[0.0, 1.0, 0.0]));
         // Through the ball.
         assert!(!apart(&spheres(1.0).enclosed(), &[0.0, 1.0, 0.0]));
+        // An ulp past the ball: beyond f64 intervals' rounding of the
+        // square roots, proven in double words.
+        let ulp_past = spheres(3f64.next_up());
+        assert!(!apart(&ulp_past.enclosed(), &[0.0, 1.0, 0.0]));
+        assert!(apart(&ulp_past, &[0.0, 1.0, 0.0]));
+        assert!(!apart(&spheres(3.0), &[0.0, 1.0, 0.0]));
+    }
+
+    /// The exit of a clean pass is proven on its side, and a ray tangent
+    /// to the ball (distance exactly 3) has no proven crossing.
+    #[test]
+    fn exits_are_proven_and_tangents_are_not() {
+        let fine = spheres(1.0);
+        let line = fine.enclosed();
+        let n = polish(&line.mid(), &[1.0, 0.2, 0.0], 1.0).expect("converges");
+        let c = crossing(&line, &fine, &n, 1.0).expect("proven");
+        let t = (10.0 + 8f64.sqrt()) / 20.0;
+        assert!(
+            c.u.lo <= t && t <= c.u.hi && c.u.width() < 6e-16,
+            "{:?} {t}",
+            c.u
+        );
+        let tangent = spheres(3.0);
+        let tl = tangent.enclosed();
+        for side in [-1.0, 1.0] {
+            assert!(crossing(&tl, &tangent, &[0.0, 1.0, 0.0], side).is_none());
+        }
     }
 }
