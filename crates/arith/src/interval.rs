@@ -113,8 +113,14 @@ impl Interval {
     }
     /// A certified enclosure of a rational.
     pub fn from_rat(x: &Rat) -> Interval {
-        let n = Interval::from_int(x.numer());
-        let d = Interval::from_int(x.denom());
+        // Numerator and denominator below 2^53 (decimal scene numbers) are
+        // the exact points `from_int` gives them, without its big-integer
+        // steps.
+        let short = |v: &Int| v.to_i64().filter(|v| v.unsigned_abs() < 1 << 53);
+        let (n, d) = match (short(x.numer()), short(x.denom())) {
+            (Some(n), Some(d)) => (Interval::point(n as f64), Interval::point(d as f64)),
+            _ => (Interval::from_int(x.numer()), Interval::from_int(x.denom())),
+        };
         n.div_positive(d)
     }
     /// `self / d` for an interval `d` of positive numbers.
@@ -387,6 +393,19 @@ mod tests {
             let s = Interval::from_rat(&x.abs()).sqrt();
             let (lo, hi) = (r(s.lo), r(s.hi));
             prop_assert!(&lo * &lo <= x.abs() && x.abs() <= &hi * &hi, "{:?}", s);
+        }
+    }
+
+    proptest! {
+        /// The short path of `from_rat` gives the general path's interval,
+        /// bit for bit, on both sides of 2^53.
+        #[test]
+        fn short_rationals_are_enclosed_as_before(n in any::<i64>(), d in 1i64..i64::MAX, shift in 0u32..12) {
+            let (n, d) = (n >> shift, d >> shift.min(8));
+            let x = Rat::from_frac(n, d.max(1));
+            let general = Interval::from_int(x.numer()).div_positive(Interval::from_int(x.denom()));
+            let short = Interval::from_rat(&x);
+            prop_assert_eq!((short.lo.to_bits(), short.hi.to_bits()), (general.lo.to_bits(), general.hi.to_bits()));
         }
     }
 

@@ -82,7 +82,13 @@ impl<T: Scalar + RingOps> Line<T> {
         let c0: V3<T> = std::array::from_fn(|i| b0[i] - a0[i]);
         let v = std::array::from_fn(|i| (b1[i] - a1[i]) - c0[i]);
         let da = std::array::from_fn(|i| a1[i] - a0[i]);
-        let sizes: Vec<f64> = a.radii.iter().chain(&b.radii).map(Rat::to_f64).collect();
+        // Within an ulp (the tolerances carry a margin of 10⁻⁹).
+        let sizes: Vec<f64> = a
+            .radii
+            .iter()
+            .chain(&b.radii)
+            .map(|r| Interval::from_rat(r).mid())
+            .collect();
         let line = Line {
             pa: shape(&a.radii, qa),
             pb: shape(&b.radii, qb),

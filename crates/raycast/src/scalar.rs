@@ -21,7 +21,7 @@ pub trait Scalar:
     fn over(self, d: Self) -> Self;
     /// `√self` of a quantity known to be `>= 0`.
     fn root(self) -> Self;
-    /// An enclosure of `x` (its nearest value for `f64`).
+    /// An enclosure of `x` (for `f64`: a value within an ulp of it).
     fn rat(x: &Rat) -> Self;
     /// Whether the value is finite (an enclosure that says something).
     fn known(self) -> bool;
@@ -40,7 +40,9 @@ impl Scalar for f64 {
         self.max(0.0).sqrt()
     }
     fn rat(x: &Rat) -> f64 {
-        x.to_f64()
+        // Within an ulp of `x` (the search needs no more), and quicker than
+        // `Rat::to_f64`'s correct rounding for short decimal numbers.
+        Interval::from_rat(x).mid()
     }
     fn known(self) -> bool {
         self.is_finite()
