@@ -812,3 +812,38 @@ fn a_first_contact_query_stopping_at_a_touch_at_t0_carries_its_point() {
     }
     assert!(to_json(&fc)["first_contact"]["point"]["lo"].is_array());
 }
+
+/// The normal's normalisation at scales where its components' `f64`
+/// estimates underflow (1e-60) or overflow (1e100): its largest component
+/// is exactly ±1 and the others lie in [−1, 1] (the contract), on the
+/// exact path.
+#[test]
+fn the_normal_is_scaled_by_its_largest_component_at_any_scale() {
+    for (ra, rb, scale) in [("1e-60", "2e-60", "e-60"), ("1e100", "2e100", "e100")] {
+        let text = format!(
+            "format = 1\nspan = [\"0\", \"1\"]\n[a]\nradii = [\"{ra}\", \"{ra}\", \"{ra}\"]\n\
+             [b]\nradii = [\"{rb}\", \"{rb}\", \"{rb}\"]\n[b.motion]\nkind = \"translation\"\n\
+             center = [[\"-10{scale}\", \"1{scale}\", \"0.5{scale}\"], [\"10{scale}\", \"1{scale}\", \"0.5{scale}\"]]\n"
+        );
+        let out = run(
+            &Scene::from_toml(&text).expect("valid"),
+            &Options::default(),
+        )
+        .expect("runs");
+        assert_eq!(out.geometry.len(), 2, "{scale}");
+        for g in &out.geometry {
+            let (_, normal, certified) = point_of(g);
+            assert!(certified);
+            let one = Rat::one();
+            let k = (0..3)
+                .find(|&k| normal.lo[k] == normal.hi[k] && normal.lo[k].abs() == one)
+                .unwrap_or_else(|| panic!("{scale}: no component ±1 in {normal:?}"));
+            for j in (0..3).filter(|&j| j != k) {
+                assert!(
+                    normal.lo[j].abs() <= one && normal.hi[j].abs() <= one,
+                    "{scale}: {normal:?}"
+                );
+            }
+        }
+    }
+}

@@ -474,12 +474,15 @@ pub(crate) fn times_point<S: RingOps, const R: usize>(q: &Mat4<S>, x: &[S]) -> [
 
 fn argmax<S: Scalar, const N: usize>(v: &[S; N]) -> usize {
     let estimates = v.each_ref().map(|x| x.estimate().abs());
-    if estimates.iter().all(|e| e.is_finite()) {
+    // Estimates that overflow, or underflow to 0 or below f64's normal
+    // range (coordinates of 1e100 or 1e-60 square past it), do not order
+    // the components: then the exact ends do.
+    let usable = |e: &f64| e.is_finite() && (*e == 0.0 || e.is_normal());
+    if estimates.iter().all(usable) && estimates.iter().any(|e| e.is_normal()) {
         return (0..N)
             .max_by(|&i, &j| estimates[i].total_cmp(&estimates[j]))
             .unwrap_or(0);
     }
-    // Beyond f64 (coordinates of 1e100 square past it): the exact ends.
     let magnitude = |x: &S| x.bounds().map(|(lo, hi)| lo.abs().max(hi.abs()));
     let m = v.each_ref().map(magnitude);
     (0..N).max_by(|&i, &j| m[i].cmp(&m[j])).unwrap_or(0)

@@ -123,7 +123,10 @@ impl<'a> System<'a> {
         // `v⊥` is not — near a graze its tilt of an ulp moves the zero.
         // Scaled by a power of two (exactly) to `|v × a| ≈ 1`, so that
         // `J` and its inverse stay far from f64's ends for any size.
-        let size = dot(&f.v, &f.v).sqrt();
+        let size = f.v.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        if !(1e-300..=1e300).contains(&size) {
+            return None;
+        }
         let scale = 2f64.powi(-(size.log2().round() as i32));
         let across = basis(&unit(&f.v)?).map(|a| a.map(|x| x * scale));
         Some(System {
