@@ -431,7 +431,9 @@ fn near_grazes_agree_or_go_to_algorithm_1() {
             }
         }
     }
-    assert!(answered >= 24, "answered {answered} of 160");
+    // 78 with the planes made parallel to the ray in double words, 68
+    // without them.
+    assert!(answered >= 76, "answered {answered} of 160");
 }
 
 /// B's centre in [`pass`]`(0, [0, 1])` at time `t`: `(−10 + 20t, 0, 0)`.

@@ -100,11 +100,14 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
             .as_ref()
     };
     let apart = || Some(Answer::Apart.outcome(scene, options));
-    // A plane in f64 intervals, else (a near miss) in double words.
+    // A plane in f64 intervals, else (a near miss) in double words, as
+    // found or made exactly parallel to the ray.
     let separates = |planes: &[Option<[f64; 3]>]| {
         let planes = || planes.iter().flatten();
         line().is_some_and(|line| planes().any(|n| verify::apart(line, n)))
-            || fine().is_some_and(|fine| planes().any(|n| verify::apart(fine, n)))
+            || fine().is_some_and(|fine| {
+                planes().any(|n| verify::apart(fine, n) || verify::apart_parallel(fine, n))
+            })
     };
     let (entry, exit) = match search::guess(&f)? {
         Guess::Misses(n) => {

@@ -21,10 +21,21 @@ const REFINE_STEPS: usize = 4;
 /// (`n·c(u) > h_K(n)`), hence, the condition being linear in `u`, every
 /// point between them, and `K` lies on the other side.
 pub fn apart<T: Scalar>(line: &Line<T>, n: &V3<f64>) -> bool {
-    let n = lift(n);
+    apart_by(line, &lift(n))
+}
+
+/// [`apart`] for the plane of `v × (n × v)`: `n` made exactly parallel to
+/// the ray (an enclosure of that vector), for a near miss whose gap is
+/// smaller than what an `f64` normal's tilt of an ulp (`n·v ≠ 0`) costs
+/// at one end of the span.
+pub fn apart_parallel<T: Scalar>(line: &Line<T>, n: &V3<f64>) -> bool {
+    apart_by(line, &cross(&line.v, &cross(&lift(n), &line.v)))
+}
+
+fn apart_by<T: Scalar>(line: &Line<T>, n: &V3<T>) -> bool {
     [0.0, 1.0]
         .into_iter()
-        .all(|u| clearance(line, &n, T::of(u)).positive())
+        .all(|u| clearance(line, n, T::of(u)).positive())
 }
 
 /// A proven crossing of `∂K` by the ray: the entry or the exit.
