@@ -62,11 +62,12 @@ pub fn support_point<T: Scalar>(p: &M3<T>, n: &V3<T>) -> V3<T> {
     support(p, n).1
 }
 
-/// `∇h_K(n) = ∇h_A(n) + ∇h_B(n)`: the point of `K` whose outward normal
-/// is `n`.
-pub fn boundary_point<T: Scalar>(line: &Line<T>, n: &V3<T>) -> V3<T> {
-    let (ga, gb) = (support(&line.pa, n).1, support(&line.pb, n).1);
-    std::array::from_fn(|i| ga[i] + gb[i])
+/// `∇h_K(n) = ∇h_A(n) + ∇h_B(n)`, the point of `K` whose outward normal
+/// is `n`, and `φ(n)` from the same support functions.
+pub fn boundary_point<T: Scalar>(line: &Line<T>, n: &V3<T>) -> (V3<T>, T) {
+    let ((ha, ga, _), (hb, gb, _)) = (support(&line.pa, n), support(&line.pb, n));
+    let phi = (ha + hb - dot(n, &line.c0)).over(dot(n, &line.v));
+    (std::array::from_fn(|i| ga[i] + gb[i]), phi)
 }
 
 /// The support functions of both bodies, summed: `h_K`, `∇h_K`, `∇²h_K`.

@@ -121,6 +121,8 @@ struct System<'a> {
 /// What a Newton step at a normal `n` needs: `E = basis(n)`, `Y ≈ J⁻¹`
 /// and `Y·G(0)` (enclosed).
 struct Newton {
+    /// `φ(n)` in double words.
+    phi: DwBall,
     e: [V3<f64>; 2],
     y: [[Interval; 2]; 2],
     yg: [Interval; 2],
@@ -154,7 +156,7 @@ impl<'a> System<'a> {
     /// converge quadratically near a graze).
     fn newton(&self, n: &V3<f64>, precise: bool) -> Option<Newton> {
         let e = basis(n);
-        let g: V3<DwBall> = boundary_point(self.fine, &lift(n));
+        let (g, phi): (V3<DwBall>, DwBall) = boundary_point(self.fine, &lift(n));
         let gap: V3<DwBall> = std::array::from_fn(|i| g[i] - self.fine.c0[i]);
         let g0 = self.fd.map(|fi| enclosure(dot(&fi, &gap)));
         let hess = if precise {
@@ -166,13 +168,13 @@ impl<'a> System<'a> {
         let jm = fm.map(|fi| e.map(|ej| form(&fi, &hess, &ej)));
         let y = inverse2(&jm)?.map(|r| r.map(Interval::point));
         let yg = std::array::from_fn(|i| y[i][0] * g0[0] + y[i][1] * g0[1]);
-        Some(Newton { e, y, yg })
+        Some(Newton { phi, e, y, yg })
     }
 
     /// Krawczyk's test around `n` (boxes of [`TRIES`] radii from
     /// `4·|Y·G(0)|`), and the crossing it proves.
     fn krawczyk(&self, n: &V3<f64>, newton: &Newton, side: f64) -> Option<Crossing> {
-        let Newton { e, y, yg } = newton;
+        let Newton { phi, e, y, yg } = newton;
         let line = self.line;
         let ew = e.map(|ei| lift::<Interval>(&ei));
         let widest = yg
@@ -199,8 +201,7 @@ impl<'a> System<'a> {
             if k.iter().all(|x| x.lo > -r && x.hi < r) {
                 let normal = offset(n, e, &k);
                 let step: V3<Interval> = std::array::from_fn(|i| ew[0][i] * k[0] + ew[1][i] * k[1]);
-                let at = slope(self.fine, &lift(n)).phi;
-                let u = enclosure(at) + dot(&slope(line, &boxed).grad, &step);
+                let u = enclosure(*phi) + dot(&slope(line, &boxed).grad, &step);
                 let centre = axpy(&line.a0, u, &line.da);
                 let s = support_point(&line.pa, &normal);
                 let point = std::array::from_fn(|i| centre[i] + s[i]);
