@@ -478,3 +478,113 @@ fn crossings_near_the_ends_agree_or_go_to_algorithm_1() {
         }
     }
 }
+
+/// The sign of `x + y·√d` (`d >= 0`), exactly.
+fn sign_surd(x: &Rat, y: &Rat, d: &Rat) -> i32 {
+    let (sx, sy) = (x.signum(), y.signum());
+    if sy == 0 || d.is_zero() || sx == sy {
+        return if sx == 0 { sy } else { sx };
+    }
+    if sx == 0 {
+        return sy;
+    }
+    // Opposite signs: the larger of x² and y²·d wins.
+    match (x * x).cmp(&(&(y * y) * d)) {
+        std::cmp::Ordering::Greater => sx,
+        std::cmp::Ordering::Less => sy,
+        std::cmp::Ordering::Equal => 0,
+    }
+}
+
+/// Spheres of radii `ra` (A, at rest at the origin) and `rb` (B, centre
+/// `c₀ + u·v`): they touch at `u± = (−q ± √Δ)/p` with `p = v·v`,
+/// `q = c₀·v`, `Δ = q² − p·(c₀·c₀ − (ra + rb)²)`, at the point
+/// `ra/(ra + rb)·c(u±)`: closed forms decided in rationals.
+struct Pass {
+    p: Rat,
+    q: Rat,
+    delta: Rat,
+    c0: [Rat; 3],
+    v: [Rat; 3],
+    share: Rat,
+}
+
+impl Pass {
+    /// The sign of `α + β·u±` (`s = ∓1`).
+    fn sign(&self, s: i32, alpha: &Rat, beta: &Rat) -> i32 {
+        let x = &(alpha * &self.p) - &(beta * &self.q);
+        let y = if s > 0 { beta.clone() } else { -beta };
+        sign_surd(&x, &y, &self.delta)
+    }
+    /// Whether `[lo, hi]` holds `u±`.
+    fn holds(&self, s: i32, lo: &Rat, hi: &Rat) -> bool {
+        let one = Rat::one();
+        self.sign(s, &-lo, &one) >= 0 && self.sign(s, &-hi, &one) <= 0
+    }
+    /// Whether the box holds the contact point at `u±`.
+    fn point_in(&self, s: i32, point: &ccd_exact::Box3) -> bool {
+        (0..3).all(|i| {
+            let (alpha, beta) = (&self.share * &self.c0[i], &self.share * &self.v[i]);
+            self.sign(s, &(&alpha - &point.lo[i]), &beta) >= 0
+                && self.sign(s, &(&alpha - &point.hi[i]), &beta) <= 0
+        })
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// Every instant and contact point the ray cast gives for two spheres
+    /// holds the closed form's (independently of Algorithm 1), in passes
+    /// from far off to grazing within 10⁻⁶ of the sum of the radii.
+    #[test]
+    fn sphere_contacts_hold_their_closed_forms(
+        ra in decimal(0.1, 3.0, 9),
+        rb in decimal(0.1, 3.0, 9),
+        start in vec3(12.0, 9),
+        aim in vec3(1.0, 9),
+        near in prop_oneof![Just(None), (1i64..=6).prop_map(Some)],
+        first in any::<bool>(),
+    ) {
+        let r = &ra + &rb;
+        // Aim at a point `aim` off the origin, or (near) at distance
+        // r·(1 ± 10^(−k)) from it across the ray.
+        let c0 = start.clone();
+        let mut target: [Rat; 3] = std::array::from_fn(|i| &aim[i] * &r);
+        if let Some(k) = near {
+            let scale = &Rat::one() + &Rat::new(1.into(), ccd_arith::Int::pow10(k as u32)).expect("nonzero");
+            target = std::array::from_fn(|i| &aim[i] * &(&r * &scale));
+        }
+        let end: [Rat; 3] = std::array::from_fn(|i| &(&target[i] * &Rat::from(2)) - &c0[i]);
+        let v: [Rat; 3] = std::array::from_fn(|i| &end[i] - &c0[i]);
+        let dot = |a: &[Rat; 3], b: &[Rat; 3]| (0..3).fold(Rat::zero(), |s, i| &s + &(&a[i] * &b[i]));
+        let (p, q) = (dot(&v, &v), dot(&c0, &v));
+        prop_assume!(!p.is_zero());
+        let delta = &(&q * &q) - &(&p * &(&dot(&c0, &c0) - &(&r * &r)));
+        let pass = Pass { p, q, delta, c0: c0.clone(), v, share: &ra / &r };
+        let scene = Scene {
+            span: [Rat::zero(), Rat::one()],
+            a: Body { radii: [ra.clone(), ra.clone(), ra.clone()], motion: Motion::at_origin() },
+            b: Body {
+                radii: [rb.clone(), rb.clone(), rb.clone()],
+                motion: Motion::translation(Bezier::polynomial(vec![c0, end])),
+            },
+        };
+        let out = run(&scene, &options(first, true)).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        if out.stats.path == Path::Raycast {
+            for (k, c) in out.contacts.iter().enumerate() {
+                let s = if k == 0 { -1 } else { 1 };
+                prop_assert!(pass.delta.signum() > 0 && pass.holds(s, &c.lo, &c.hi), "contact {}: {:?}", k, c);
+                match &out.geometry[k] {
+                    Geometry::Point { point, .. } => prop_assert!(pass.point_in(s, point), "point {}: {:?}", k, point),
+                    g => prop_assert!(false, "no point: {:?}", g),
+                }
+            }
+            if out.contacts.is_empty() && out.collision_free {
+                // Apart on [0, 1]: no root inside it.
+                let outside = |s: i32| pass.delta.signum() < 0 || !pass.holds(s, &Rat::zero(), &Rat::one());
+                prop_assert!(outside(-1) && outside(1), "a contact in the span was missed");
+            }
+        }
+    }
+}
