@@ -39,9 +39,8 @@ fn main() {
     println!(
         "scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed\traycast_us\traycast_first_us\traycast_path"
     );
-    for path_arg in args {
-        let path = &path_arg;
-        let Ok(text) = std::fs::read_to_string(path) else {
+    for path in args {
+        let Ok(text) = std::fs::read_to_string(&path) else {
             eprintln!("{path}: unreadable");
             continue;
         };
@@ -78,23 +77,18 @@ fn main() {
         };
         let r = median_us(reps, || drop(run(&scene, &ray)));
         let rf = median_us(reps, || drop(run(&scene, &ray_first)));
-        let path = match run(&scene, &ray).map(|o| o.stats.path) {
+        let answered_by = match run(&scene, &ray).map(|o| o.stats.path) {
             Ok(ccd_exact::Path::Raycast) => "raycast",
             Ok(_) => "exact",
             Err(_) => "error",
         };
-        let name = path_name(&path_arg);
+        let name = path.rsplit('/').next().unwrap_or(&path);
         println!(
-            "{name}\t{e:.1}\t{fc:.1}\t{fl:.1}\t{:.2}\t{}\t{}\t{}\t{r:.1}\t{rf:.1}\t{path}",
+            "{name}\t{e:.1}\t{fc:.1}\t{fl:.1}\t{:.2}\t{}\t{}\t{}\t{r:.1}\t{rf:.1}\t{answered_by}",
             e / fl,
             out.stats.deg_f,
             out.stats.deg_sr0.map_or(-1, |d| d as i64),
             out.stats.sr0_formed
         );
     }
-}
-
-/// The file name of a scene path.
-fn path_name(path: &str) -> &str {
-    path.rsplit('/').next().unwrap_or(path)
 }

@@ -553,9 +553,13 @@ pub fn check(
     if rational && json["certified"] != Value::Bool(true) {
         return Err("the exact path answered a rational scene uncertified".into());
     }
-    if runs.first_contact {
-        let fc = run(path, &["--json", "--first-contact"], bound)?;
-        status_ok(&fc, path, "first contact")?;
+    let fc = if runs.first_contact {
+        Some(run(path, &["--json", "--first-contact"], bound)?)
+    } else {
+        None
+    };
+    if let Some(fc) = &fc {
+        status_ok(fc, path, "first contact")?;
         let v: Value = serde_json::from_str(&fc.stdout)
             .map_err(|e| format!("first contact: output is not JSON ({e})"))?;
         timeline(&v).map_err(|e| format!("first contact: {e}"))?;
@@ -581,11 +585,6 @@ pub fn check(
     }
     if runs.raycast {
         let mut modes = vec![(vec!["--json", "--raycast"], &exact)];
-        let fc = if runs.first_contact {
-            Some(run(path, &["--json", "--first-contact"], bound)?)
-        } else {
-            None
-        };
         if let Some(fc) = &fc {
             modes.push((vec!["--json", "--raycast", "--first-contact"], fc));
         }

@@ -178,10 +178,8 @@ impl DwBall {
                 // Short numerator and denominator (decimal scene numbers):
                 // both exact in f64, which is what `from_int_scaled` gives
                 // them, without its big-integer steps.
-                const EXACT: u64 = 1 << 53;
-                let small = |v: &Int| v.to_i64().filter(|v| v.unsigned_abs() <= EXACT);
-                let (n, d) = match (small(x.numer()), small(x.denom())) {
-                    (Some(n), Some(d)) => (DwBall::exact(n as f64), DwBall::exact(d as f64)),
+                let (n, d) = match (x.numer().to_f64_exact(), x.denom().to_f64_exact()) {
+                    (Some(n), Some(d)) => (DwBall::exact(n), DwBall::exact(d)),
                     _ => (
                         DwBall::from_int_scaled(x.numer(), 0),
                         DwBall::from_int_scaled(x.denom(), 0),

@@ -263,6 +263,14 @@ impl Int {
     pub fn to_i64(&self) -> Option<i64> {
         k::to_i64(&self.0)
     }
+    /// The integer as an `f64` when that is exact and below `2^53` in
+    /// magnitude (the short numbers of a scene), without big-integer
+    /// steps; `None` otherwise.
+    pub fn to_f64_exact(&self) -> Option<f64> {
+        self.to_i64()
+            .filter(|v| v.unsigned_abs() < 1 << 53)
+            .map(|v| v as f64)
+    }
     /// `self mod p` in `[0, p)`, for `p > 0`.
     #[inline]
     pub fn mod_u64(&self, p: u64) -> u64 {

@@ -116,9 +116,8 @@ impl Interval {
         // Numerator and denominator below 2^53 (decimal scene numbers) are
         // the exact points `from_int` gives them, without its big-integer
         // steps.
-        let short = |v: &Int| v.to_i64().filter(|v| v.unsigned_abs() < 1 << 53);
-        let (n, d) = match (short(x.numer()), short(x.denom())) {
-            (Some(n), Some(d)) => (Interval::point(n as f64), Interval::point(d as f64)),
+        let (n, d) = match (x.numer().to_f64_exact(), x.denom().to_f64_exact()) {
+            (Some(n), Some(d)) => (Interval::point(n), Interval::point(d)),
             _ => (Interval::from_int(x.numer()), Interval::from_int(x.denom())),
         };
         n.div_positive(d)

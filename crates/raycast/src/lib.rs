@@ -156,9 +156,12 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
         }
         (out.u.hi < 1.0).then_some(out)
     };
-    let answer = Answer::Crosses(inn, out);
-    answer.fits(line, options)?;
-    Some(answer.outcome(scene, options))
+    let inn = contact(&inn, &scene.span, line, options)?;
+    let out = match out {
+        Some(out) => Some(contact(&out, &scene.span, line, options)?),
+        None => None,
+    };
+    Some(Answer::Crosses(inn, out).outcome(scene, options))
 }
 
 /// What the proofs found on the span `u ∈ [0, 1]` (one per query, on
@@ -167,24 +170,22 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
 enum Answer {
     /// Separate throughout.
     Apart,
-    /// Entering at the first crossing, inside `(0, 1)`; leaving at the
+    /// Entering at the first contact, inside `(0, 1)`; leaving at the
     /// second when it is inside `(0, 1)` and asked for, otherwise still
     /// overlapping at `u = 1` (or not asked: a first-contact query).
-    Crosses(Crossing, Option<Crossing>),
+    Crosses(Contact, Option<Contact>),
+}
+
+/// A proven crossing in the contract's terms: its instant in time and,
+/// when asked for, its point and normal.
+struct Contact {
+    instant: Instant,
+    geometry: Option<Geometry>,
 }
 
 /// `x` as the exact dyadic rational it is.
 fn exact(x: f64) -> Option<Rat> {
     Rat::from_f64_exact(x)
-}
-
-/// The instant enclosed by `u`, in time.
-fn instant(span: &[Rat; 2], u: &Interval) -> Option<Instant> {
-    Some(Instant {
-        lo: time_on(span, &exact(u.lo)?),
-        hi: time_on(span, &exact(u.hi)?),
-        certified: true,
-    })
 }
 
 fn box3(x: &[Interval; 3]) -> Option<Box3> {
@@ -225,44 +226,45 @@ fn widest(x: &[Interval; 3]) -> f64 {
     x.iter().map(Interval::width).fold(0.0, f64::max)
 }
 
-/// [`geometry`] as the contract's boxes.
-fn boxes(c: &Crossing) -> Option<Geometry> {
-    let [point, normal] = geometry(c)?;
-    Some(Geometry::Point {
-        point: box3(&point)?,
-        normal: box3(&normal)?,
+/// The crossing `c` as a [`Contact`] in time, or `None` unless its instant
+/// is within `10^(−digits)` of the span and (when asked for) its geometry
+/// within [`Goal::floors`].
+fn contact(
+    c: &Crossing,
+    span: &[Rat; 2],
+    line: &Line<Interval>,
+    options: &Options,
+) -> Option<Contact> {
+    let tol = 10f64.powi(-(options.digits.min(400) as i32)) * (1.0 - 1e-9);
+    if !c.u.is_finite() || c.u.width() > tol {
+        return None;
+    }
+    let instant = Instant {
+        lo: time_on(span, &exact(c.u.lo)?),
+        hi: time_on(span, &exact(c.u.hi)?),
         certified: true,
-    })
+    };
+    let geometry = if options.contact_geometry {
+        let [largest, smallest] = line.radii;
+        let [point_floor, normal_floor] = Goal::floors(largest, smallest, options.digits);
+        let [point, normal] = geometry(c)?;
+        if !(widest(&point) <= point_floor && widest(&normal) <= normal_floor) {
+            return None;
+        }
+        Some(Geometry::Point {
+            point: box3(&point)?,
+            normal: box3(&normal)?,
+            certified: true,
+        })
+    } else {
+        None
+    };
+    Some(Contact { instant, geometry })
 }
 
 impl Answer {
-    /// `Some(())` when every instant is within `10^(−digits)` of the span
-    /// and every contact's geometry within [`Goal::floors`] (when asked
-    /// for).
-    fn fits(&self, line: &Line<Interval>, options: &Options) -> Option<()> {
-        let Answer::Crosses(inn, out) = self else {
-            return Some(());
-        };
-        let tol = 10f64.powi(-(options.digits.min(400) as i32)) * (1.0 - 1e-9);
-        let [largest, smallest] = line.radii;
-        let [point, normal] = Goal::floors(largest, smallest, options.digits);
-        for c in std::iter::once(inn).chain(out) {
-            if !c.u.is_finite() || c.u.width() > tol {
-                return None;
-            }
-            if options.contact_geometry {
-                let [p, n] = geometry(c)?;
-                if !(widest(&p) <= point && widest(&n) <= normal) {
-                    return None;
-                }
-                boxes(c)?;
-            }
-        }
-        Some(())
-    }
-
     /// The result in the contract's shape, as Algorithm 1 reports it.
-    fn outcome(&self, scene: &Scene, options: &Options) -> Outcome {
+    fn outcome(self, scene: &Scene, options: &Options) -> Outcome {
         let span = &scene.span;
         let [t0, t1] = span.clone().map(Instant::exact);
         let segment = |state, start: &Instant, end: &Instant| Segment {
@@ -271,44 +273,36 @@ impl Answer {
             end: end.clone(),
             certified: true,
         };
-        let (timeline, crossings) = match self {
+        let crossed = matches!(self, Answer::Crosses(..));
+        let (timeline, found) = match self {
             Answer::Apart => (vec![segment(State::Separate, &t0, &t1)], vec![]),
             Answer::Crosses(inn, out) => {
-                let i = instant(span, &inn.u).expect("finite: checked by fits");
+                let i = &inn.instant;
                 let mut timeline = vec![
-                    segment(State::Separate, &t0, &i),
-                    segment(State::Touch, &i, &i),
+                    segment(State::Separate, &t0, i),
+                    segment(State::Touch, i, i),
                 ];
-                let mut crossings = vec![(i.clone(), *inn)];
                 if !options.first_contact_only {
-                    match out {
+                    match &out {
                         Some(out) => {
-                            let o = instant(span, &out.u).expect("finite: checked by fits");
-                            timeline.push(segment(State::Overlap, &i, &o));
-                            timeline.push(segment(State::Touch, &o, &o));
-                            timeline.push(segment(State::Separate, &o, &t1));
-                            crossings.push((o, *out));
+                            let o = &out.instant;
+                            timeline.push(segment(State::Overlap, i, o));
+                            timeline.push(segment(State::Touch, o, o));
+                            timeline.push(segment(State::Separate, o, &t1));
                         }
-                        None => timeline.push(segment(State::Overlap, &i, &t1)),
+                        None => timeline.push(segment(State::Overlap, i, &t1)),
                     }
                 }
-                (timeline, crossings)
+                (timeline, std::iter::once(inn).chain(out).collect())
             }
         };
-        let geometry = if options.contact_geometry {
-            crossings
-                .iter()
-                .map(|(_, c)| boxes(c).expect("checked by fits"))
-                .collect()
-        } else {
-            Vec::new()
-        };
+        let (contacts, geometry): (Vec<Instant>, Vec<Option<Geometry>>) =
+            found.into_iter().map(|c| (c.instant, c.geometry)).unzip();
         let segment_geometry = if options.contact_geometry {
             vec![None; timeline.len()]
         } else {
             Vec::new()
         };
-        let contacts: Vec<Instant> = crossings.into_iter().map(|(i, _)| i).collect();
         Outcome {
             span: span.clone(),
             collision_free: contacts.is_empty(),
@@ -320,10 +314,10 @@ impl Answer {
             gaps: Vec::new(),
             stats: Stats {
                 path: Path::Raycast,
-                candidates: usize::from(matches!(self, Answer::Crosses(..))),
+                candidates: usize::from(crossed),
                 ..Stats::default()
             },
-            geometry,
+            geometry: geometry.into_iter().flatten().collect(),
             segment_geometry,
         }
     }

@@ -83,12 +83,10 @@ impl<T: Scalar + RingOps> Line<T> {
         let v = std::array::from_fn(|i| (b1[i] - a1[i]) - c0[i]);
         let da = std::array::from_fn(|i| a1[i] - a0[i]);
         // Within an ulp (the tolerances carry a margin of 10⁻⁹).
-        let sizes: Vec<f64> = a
-            .radii
-            .iter()
-            .chain(&b.radii)
-            .map(|r| Interval::from_rat(r).mid())
-            .collect();
+        let sizes: [f64; 6] = std::array::from_fn(|i| {
+            let r = if i < 3 { &a.radii[i] } else { &b.radii[i - 3] };
+            Interval::from_rat(r).mid()
+        });
         let line = Line {
             pa: shape(&a.radii, qa),
             pb: shape(&b.radii, qb),
@@ -97,8 +95,8 @@ impl<T: Scalar + RingOps> Line<T> {
             a0,
             da,
             radii: [
-                sizes.iter().copied().fold(0.0, f64::max),
-                sizes.iter().copied().fold(f64::INFINITY, f64::min),
+                sizes.into_iter().fold(0.0, f64::max),
+                sizes.into_iter().fold(f64::INFINITY, f64::min),
             ],
         };
         let finite = |x: &T| x.known();

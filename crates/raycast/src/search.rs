@@ -4,7 +4,7 @@
 //! trusted: [`crate::verify`] proves or rejects what it returns.
 
 use crate::line::Line;
-use crate::scalar::{apply, axpy, dot, form, M3, V3};
+use crate::scalar::{apply, axpy, cross, dot, form, M3, V3};
 use crate::support::{jet, support_k};
 
 /// Newton steps before the search gives up.
@@ -100,13 +100,6 @@ pub fn basis(n: &V3<f64>) -> [V3<f64>; 2] {
         .unwrap_or(0);
     let mut e = [0.0; 3];
     e[k] = 1.0;
-    let cross = |a: &V3<f64>, b: &V3<f64>| -> V3<f64> {
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    };
     let e1 = unit(&cross(n, &e)).unwrap_or([0.0, 1.0, 0.0]);
     let e2 = cross(n, &e1);
     [e1, e2]

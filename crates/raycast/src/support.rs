@@ -80,34 +80,31 @@ pub fn support_k<T: Scalar>(line: &Line<T>, n: &V3<T>) -> (T, V3<T>, M3<T>) {
     (ha + hb, g, s)
 }
 
-/// `φ`, `n·v` and `∇φ` at `n` (the [`Jet`] without its Hessian, which
-/// is zero here), from `h_K` and `∇h_K`.
-fn first<T: Scalar>(line: &Line<T>, n: &V3<T>, h: T, gh: &V3<T>) -> (Jet<T>, T) {
+/// `φ`, `D = n·v`, `∇φ` and `1/D` at `n`, from `h_K` and `∇h_K`.
+fn first<T: Scalar>(line: &Line<T>, n: &V3<T>, h: T, gh: &V3<T>) -> (T, T, V3<T>, T) {
     let d = dot(n, &line.v);
     let inv = T::of(1.0).over(d);
     let phi = (h - dot(n, &line.c0)) * inv;
-    let grad: V3<T> = std::array::from_fn(|i| (gh[i] - line.c0[i] - phi * line.v[i]) * inv);
-    let hess = [[T::of(0.0); 3]; 3];
-    (Jet { phi, d, grad, hess }, inv)
+    let grad = std::array::from_fn(|i| (gh[i] - line.c0[i] - phi * line.v[i]) * inv);
+    (phi, d, grad, inv)
 }
 
-/// `φ`, `n·v` and `∇φ` at `n`, without the Hessian (left zero): what
-/// the double-word evaluation at the search's normal needs.
-pub fn slope<T: Scalar>(line: &Line<T>, n: &V3<T>) -> Jet<T> {
-    let (ha, ga, _) = support(&line.pa, n);
-    let (hb, gb, _) = support(&line.pb, n);
+/// `∇φ(n)` alone (enclosed over a box for the mean-value form of the
+/// instant).
+pub fn gradient<T: Scalar>(line: &Line<T>, n: &V3<T>) -> V3<T> {
+    let ((ha, ga, _), (hb, gb, _)) = (support(&line.pa, n), support(&line.pb, n));
     let g = std::array::from_fn(|i| ga[i] + gb[i]);
-    first(line, n, ha + hb, &g).0
+    first(line, n, ha + hb, &g).2
 }
 
 /// The [`Jet`] of `φ` at `n` (each entry enclosed when `T` is an
 /// interval type and `n` a box).
 pub fn jet<T: Scalar>(line: &Line<T>, n: &V3<T>) -> Jet<T> {
     let (h, gh, hh) = support_k(line, n);
-    let (mut j, inv) = first(line, n, h, &gh);
-    let (grad, v) = (j.grad, &line.v);
-    j.hess = symmetric(|i, k| (hh[i][k] - grad[i] * v[k] - v[i] * grad[k]) * inv);
-    j
+    let (phi, d, grad, inv) = first(line, n, h, &gh);
+    let v = &line.v;
+    let hess = symmetric(|i, k| (hh[i][k] - grad[i] * v[k] - v[i] * grad[k]) * inv);
+    Jet { phi, d, grad, hess }
 }
 
 /// `n·c(u) − h_K(n)`: positive when the ray's point at `u` is strictly

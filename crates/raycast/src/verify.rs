@@ -6,7 +6,7 @@
 use crate::line::{enclosure, Line};
 use crate::scalar::{axpy, cross, dot, form, lift, Scalar, V3};
 use crate::search::{basis, inverse2, unit};
-use crate::support::{boundary_point, clearance, slope, support_k, support_point};
+use crate::support::{boundary_point, clearance, gradient, support_k, support_point};
 use ccd_arith::{DwBall, Interval};
 
 /// Box radii tried by [`crossing`], each 16 times the last.
@@ -95,8 +95,8 @@ pub fn crossing(
             _ if step == REFINE_STEPS => return None,
             _ => {}
         }
-        let [e, yg] = [newton.e, newton.yg.map(|x| [x.mid(); 3])];
-        n = unit(&axpy(&axpy(&n, -yg[0][0], &e[0]), -yg[1][0], &e[1]))?;
+        let (e, w) = (&newton.e, newton.yg.map(|x| x.mid()));
+        n = unit(&axpy(&axpy(&n, -w[0], &e[0]), -w[1], &e[1]))?;
     }
     None
 }
@@ -201,7 +201,7 @@ impl<'a> System<'a> {
             if k.iter().all(|x| x.lo > -r && x.hi < r) {
                 let normal = offset(n, e, &k);
                 let step: V3<Interval> = std::array::from_fn(|i| ew[0][i] * k[0] + ew[1][i] * k[1]);
-                let u = enclosure(*phi) + dot(&slope(line, &boxed).grad, &step);
+                let u = enclosure(*phi) + dot(&gradient(line, &boxed), &step);
                 let centre = axpy(&line.a0, u, &line.da);
                 let s = support_point(&line.pa, &normal);
                 let point = std::array::from_fn(|i| centre[i] + s[i]);
