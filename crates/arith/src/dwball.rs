@@ -115,6 +115,7 @@ pub struct DwBall {
 
 impl DwBall {
     /// An exact `f64` (finite).
+    #[inline]
     pub fn exact(x: f64) -> DwBall {
         DwBall::checked(x, 0.0, 0.0)
     }
@@ -144,6 +145,7 @@ impl DwBall {
     }
 
     /// Whether the radius is finite (the ball says something).
+    #[inline]
     pub fn is_known(&self) -> bool {
         self.rad.is_finite()
     }
@@ -163,11 +165,26 @@ impl DwBall {
             x.shr_floor(e).to_i128()
         }
         .expect("at most 120 bits");
+        let t = DwBall::from_i128(t);
+        let lost = t.rad + if e > 0 { 1.0 } else { 0.0 };
+        DwBall { rad: lost, ..t }.mul_pow2(e as i64 - shift)
+    }
+
+    /// An enclosure of a machine integer: exact (radius 0) when it has at
+    /// most 106 bits.
+    pub fn from_i128(t: i128) -> DwBall {
+        if t.unsigned_abs() < 1 << 53 {
+            // Exact in one f64 (a machine conversion, not i128's library call).
+            return DwBall::exact(t as i64 as f64);
+        }
+        if t.unsigned_abs() >= 1 << 120 {
+            return DwBall::from_int_scaled(&Int::from_i128(t), 0);
+        }
         let hi = t as f64;
         let rest = t - hi as i128; // |rest| <= 2^66: exact
         let lo = rest as f64;
-        let lost = (rest - lo as i128).unsigned_abs() as f64 + if e > 0 { 1.0 } else { 0.0 };
-        DwBall { hi, lo, rad: lost }.mul_pow2(e as i64 - shift)
+        let lost = (rest - lo as i128).unsigned_abs() as f64;
+        DwBall { hi, lo, rad: lost }
     }
 
     /// An enclosure of a rational (exact for dyadics of at most 106 bits).
@@ -319,24 +336,28 @@ impl DwBall {
 /// The operators of [`RingOps`], for generic code written with `+ − ×`.
 impl std::ops::Add for DwBall {
     type Output = DwBall;
+    #[inline]
     fn add(self, o: DwBall) -> DwBall {
         self.plus(&o)
     }
 }
 impl std::ops::Sub for DwBall {
     type Output = DwBall;
+    #[inline]
     fn sub(self, o: DwBall) -> DwBall {
         self.minus(&o)
     }
 }
 impl std::ops::Mul for DwBall {
     type Output = DwBall;
+    #[inline]
     fn mul(self, o: DwBall) -> DwBall {
         self.times(&o)
     }
 }
 impl std::ops::Neg for DwBall {
     type Output = DwBall;
+    #[inline]
     fn neg(self) -> DwBall {
         self.negated()
     }
@@ -357,13 +378,16 @@ impl RingOps for DwBall {
     fn is_zero(&self) -> bool {
         self.hi == 0.0 && self.lo == 0.0 && self.rad == 0.0
     }
+    #[inline]
     fn plus(&self, o: &Self) -> Self {
         let (hi, lo) = dw_add(self.hi, self.lo, o.hi, o.lo);
         DwBall::checked(hi, lo, (self.rad + o.rad + ROUNDING * hi.abs()) * UP)
     }
+    #[inline]
     fn minus(&self, o: &Self) -> Self {
         self.plus(&o.negated())
     }
+    #[inline]
     fn times(&self, o: &Self) -> Self {
         let (hi, lo) = dw_mul(self.hi, self.lo, o.hi, o.lo);
         if hi == 0.0 && self.hi != 0.0 && o.hi != 0.0 {
@@ -381,6 +405,7 @@ impl RingOps for DwBall {
             (self.hi.abs() * o.rad + o.hi.abs() * self.rad) * (1.0 + pow2(-51)) + self.rad * o.rad;
         DwBall::checked(hi, lo, (spread + ROUNDING * hi.abs()) * UP + tiny)
     }
+    #[inline]
     fn negated(&self) -> Self {
         DwBall {
             hi: -self.hi,
@@ -426,6 +451,22 @@ mod tests {
             }
             prop_assert!(DwBall::exact(0.0).sqrt().rad.is_infinite());
             prop_assert!(DwBall::exact(-1.0).sqrt().rad.is_infinite());
+        }
+    }
+
+    proptest! {
+        /// Machine integers of every length: `from_i128` is
+        /// `from_int_scaled`'s ball bit for bit, exact up to 106 bits.
+        #[test]
+        fn machine_integers_as_from_int(x in any::<i128>(), shift in 0u32..127) {
+            let x = x >> shift;
+            let b = DwBall::from_i128(x);
+            let want = DwBall::from_int_scaled(&Int::from_i128(x), 0);
+            prop_assert_eq!((b.hi.to_bits(), b.lo.to_bits(), b.rad.to_bits()), (want.hi.to_bits(), want.lo.to_bits(), want.rad.to_bits()));
+            prop_assert!(holds(&b, &Rat::from_int(Int::from_i128(x))));
+            if x.unsigned_abs() < 1 << 106 {
+                prop_assert_eq!(b.rad, 0.0);
+            }
         }
     }
 

@@ -107,6 +107,21 @@ impl Interval {
         }
         Interval::from_int(&Int::from_i64(v))
     }
+    /// A certified enclosure of a machine integer: the point itself when it
+    /// is exact in `f64`, else the two neighbours of its rounding.
+    pub fn from_i128(v: i128) -> Interval {
+        if v.unsigned_abs() < 1 << 53 {
+            // Exact (a machine conversion, not i128's library call).
+            return Interval::point(v as i64 as f64);
+        }
+        let x = v as f64;
+        // `as i128` saturates: the bracket also covers |v| near 2^127.
+        if v.unsigned_abs() < 1 << 100 && x as i128 == v {
+            Interval::point(x)
+        } else {
+            Interval::new(x.next_down(), x.next_up())
+        }
+    }
     /// A certified enclosure of an integer.
     pub fn from_int(x: &Int) -> Interval {
         Interval::from_int_scaled(x, 0)
@@ -392,6 +407,23 @@ mod tests {
             let s = Interval::from_rat(&x.abs()).sqrt();
             let (lo, hi) = (r(s.lo), r(s.hi));
             prop_assert!(&lo * &lo <= x.abs() && x.abs() <= &hi * &hi, "{:?}", s);
+        }
+    }
+
+    proptest! {
+        /// Machine integers of every length are enclosed, as points when
+        /// exact in `f64` and at most two ulps wide otherwise.
+        #[test]
+        fn machine_integers_are_enclosed(x in any::<i128>(), shift in 0u32..127) {
+            let x = x >> shift;
+            let i = Interval::from_i128(x);
+            let r = |v: f64| Rat::from_f64_exact(v).expect("finite");
+            let exact = Rat::from_int(Int::from_i128(x));
+            prop_assert!(r(i.lo) <= exact && exact <= r(i.hi), "{:?} {}", i, x);
+            if x.unsigned_abs() < 1 << 53 {
+                prop_assert_eq!(i.lo, i.hi);
+            }
+            prop_assert!(i.hi <= i.lo.next_up().next_up());
         }
     }
 

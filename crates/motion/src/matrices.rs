@@ -254,6 +254,39 @@ fn rat_vec_to_int<I: Integer, const N: usize>(v: [&Rat; N]) -> [I; N] {
     v.map(|x| times_denominator(x, &den))
 }
 
+/// `v` over one denominator: `(n, L)` with `v = n/L` and `L` the lcm of
+/// `v`'s denominators, in `i128`; `None` when a number does not fit (the
+/// caller then encloses `v` otherwise).
+///
+/// ```
+/// use ccd_arith::Rat;
+/// let v = [Rat::from_frac(1, 4), Rat::from_frac(-5, 6), Rat::from(2)];
+/// let (n, l) = ccd_motion::matrices::small_over_common_denominator(v.each_ref()).unwrap();
+/// assert_eq!((n, l), ([3, -10, 24], 12));
+/// ```
+///
+/// Numerators and denominators must fit `i64` and the lcm too (the short
+/// numbers of a scene): word operations only, no big-integer steps.
+pub fn small_over_common_denominator<const N: usize>(v: [&Rat; N]) -> Option<([i128; N], i128)> {
+    let mut parts = [(0i64, 1i64); N];
+    for (p, x) in parts.iter_mut().zip(v) {
+        *p = (x.numer().to_i64()?, x.denom().to_i64()?);
+    }
+    // Denominators are positive; the lcm skips those it already holds.
+    let mut den = 1i64;
+    for &(_, d) in &parts {
+        if den % d != 0 {
+            let g = ccd_arith::gcd_u128(den as u128, d as u128) as i64;
+            den = (den / g).checked_mul(d)?;
+        }
+    }
+    // |n| <= 2^63 and den/d < 2^63: the product fits.
+    Some((
+        parts.map(|(n, d)| i128::from(n) * i128::from(den / d)),
+        i128::from(den),
+    ))
+}
+
 /// `body_diagonal(radii)` times the lcm of its entries' denominators, in
 /// integers only. With `rᵢ = nᵢ/dᵢ`, `M = (d₀d₁d₂)²` is a common
 /// denominator of the entries `e`, and `E = M·e` is `body_diagonal` of the
@@ -292,6 +325,55 @@ pub(crate) fn static_quadric<I: Integer>(radii: &[Rat; 3], center: &Vec3, q: &Qu
     let [x, y, z, w] = rat_vec_to_int([&center[0], &center[1], &center[2], &one]);
     let n = rigid_inverse(&rotation_numerator(&q), &norm2(&q), &[x, y, z], &w);
     congruence(&primitive_constant(n), &integer_diagonal(radii))
+}
+
+/// The shape matrix `P = R(q)·diag(r²)·R(q)ᵀ` of a body that does not
+/// turn — centred at the origin it is `{x : xᵀP⁻¹x <= 1}`, with support
+/// function `√(nᵀPn)` — exactly, as `P = S/d` with `S` an integer matrix
+/// and `d > 0`, computed in `i128`. With `q'` the quaternion times the lcm
+/// of its denominators (`R(q') = M(q')/|q'|² = R(q)`) and `m = L·r` for
+/// `L` the lcm of the radii's denominators,
+/// `S = M(q')·diag(m²)·M(q')ᵀ` and `d = |q'|⁴·L²`. `None` when a number on
+/// the way does not fit `i128` (long numbers: the caller encloses `P`
+/// otherwise).
+///
+/// ```
+/// use ccd_arith::Rat;
+/// // Radii 1/2, 1, 3 turned by a quarter turn about z: P = diag(1, 1/4, 9).
+/// let r = [Rat::from_frac(1, 2), Rat::from(1), Rat::from(3)];
+/// let q = [1, 0, 0, 1].map(Rat::from);
+/// let (s, d) = ccd_motion::matrices::shape_small(&r, &q).unwrap();
+/// let p = |x: i128| Rat::from_frac(x as i64, d as i64);
+/// assert_eq!([p(s[0][0]), p(s[1][1]), p(s[2][2])],
+///            [Rat::from(1), Rat::from_frac(1, 4), Rat::from(9)]);
+/// assert_eq!(s[0][1], 0);
+/// ```
+pub fn shape_small(radii: &[Rat; 3], q: &Quat) -> Option<(Mat3<i128>, i128)> {
+    let (q, _) = small_over_common_denominator(q.each_ref())?;
+    let (m, den) = small_over_common_denominator(radii.each_ref())?;
+    let (q, m, den) = (
+        q.map(SmallInt::from_i128),
+        m.map(SmallInt::from_i128),
+        SmallInt::from_i128(den),
+    );
+    let rot = rotation_numerator(&q);
+    let m2 = m.map(|x| x.times(&x));
+    let mr: Mat3<SmallInt> = rot
+        .each_ref()
+        .map(|row| std::array::from_fn(|k| row[k].times(&m2[k])));
+    let n2 = norm2(&q);
+    let d = n2.times(&n2).times(&den).times(&den).to_i128()?;
+    let mut s = [[0i128; 3]; 3];
+    for i in 0..3 {
+        for j in i..3 {
+            let e = (0..3).fold(SmallInt::zero(), |acc, k| {
+                acc.plus(&mr[i][k].times(&rot[j][k]))
+            });
+            s[i][j] = e.to_i128()?;
+            s[j][i] = s[i][j];
+        }
+    }
+    Some((s, d))
 }
 
 /// A constant matrix divided by the gcd of its entries: what
@@ -806,5 +888,75 @@ mod tests {
             placed_quadric(&empty, &span),
             Err(MotionError::MalformedCurve { points: 0, .. })
         ));
+    }
+
+    /// `R(q)·diag(r²)·R(q)ᵀ` by its definition in rationals.
+    fn shape_by_definition(radii: &[Rat; 3], q: &Quat) -> Mat3<Rat> {
+        let n2 = norm2(q);
+        let r = rotation_numerator(q).map(|row| row.map(|x| &x / &n2));
+        std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                (0..3).fold(Rat::zero(), |acc, k| {
+                    &acc + &(&(&r[i][k] * &r[j][k]) * &(&radii[k] * &radii[k]))
+                })
+            })
+        })
+    }
+
+    proptest::proptest! {
+        /// The integer form is the shape matrix exactly, for rational radii
+        /// and quaternions with unlike denominators, in every orientation.
+        #[test]
+        fn the_small_shape_is_exact(
+            radii in proptest::collection::vec((1i64..10_000, proptest::sample::select(vec![1i64, 3, 7, 10, 100, 1000])), 3),
+            quat in proptest::collection::vec((-99i64..100, proptest::sample::select(vec![1i64, 2, 3, 10, 100])), 4),
+        ) {
+            let radii: [Rat; 3] = std::array::from_fn(|i| Rat::from_frac(radii[i].0, radii[i].1));
+            let q: Quat = std::array::from_fn(|i| Rat::from_frac(quat[i].0, quat[i].1));
+            proptest::prop_assume!(!norm2(&q).is_zero());
+            let (s, d) = shape_small(&radii, &q).expect("short numbers fit");
+            proptest::prop_assert!(d > 0);
+            let want = shape_by_definition(&radii, &q);
+            for i in 0..3 {
+                for j in 0..3 {
+                    let got = &Rat::from(Int::from_i128(s[i][j])) / &Rat::from(Int::from_i128(d));
+                    proptest::prop_assert_eq!(&got, &want[i][j]);
+                }
+            }
+        }
+
+        /// `n/L` gives back every value, over the least common denominator.
+        #[test]
+        fn values_over_their_least_common_denominator(
+            nums in proptest::collection::vec(-(1i64 << 40)..(1i64 << 40), 5),
+            dens in proptest::collection::vec(1i64..1_000, 5),
+        ) {
+            let v: [Rat; 5] = std::array::from_fn(|i| Rat::from_frac(nums[i], dens[i]));
+            let (n, l) = small_over_common_denominator(v.each_ref()).expect("fits");
+            let lcm = v.iter().fold(Int::one(), |acc, x| acc.lcm(x.denom()));
+            proptest::prop_assert_eq!(Int::from_i128(l), lcm);
+            for (x, ni) in v.iter().zip(n) {
+                proptest::prop_assert_eq!(&Rat::from(Int::from_i128(ni)) / &Rat::from(Int::from_i128(l)), x.clone());
+            }
+        }
+    }
+
+    /// Numbers past `i64` (or an lcm past it, or products past `i128`) are
+    /// refused, for the caller's other path.
+    #[test]
+    fn long_numbers_have_no_small_shape() {
+        let one = [Rat::one(), Rat::one(), Rat::one()];
+        let q = |x: Rat| [x, Rat::one(), Rat::zero(), Rat::zero()];
+        let big = Rat::from(Int::one().shl(70));
+        assert!(shape_small(&one, &q(big.clone())).is_none());
+        let radii = [big, Rat::one(), Rat::one()];
+        assert!(shape_small(&radii, &q(Rat::one())).is_none());
+        // Denominators 2^40 − 87 and 2^40 − 57 (coprime): lcm past i64.
+        let p = |k: i64| Rat::from_frac(1, (1 << 40) - k);
+        assert!(small_over_common_denominator([&p(87), &p(57)]).is_none());
+        // A quaternion of 2^40: |q|⁴ overflows i128.
+        let q40 = [(1i64 << 40) - 1, (1 << 40) - 3, 5, 7].map(Rat::from);
+        assert!(shape_small(&one, &q40).is_none());
+        assert!(shape_small(&one, &[1, 2, 3, 4].map(Rat::from)).is_some());
     }
 }

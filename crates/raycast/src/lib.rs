@@ -69,7 +69,7 @@ use ccd_arith::{DwBall, Interval, Rat};
 use ccd_contact::Goal;
 use ccd_scene::Scene;
 use ccd_timeline::{Box3, Geometry, Instant, Outcome, Path, Segment, State, Stats};
-use line::Line;
+use line::{Line, Pair};
 use search::Guess;
 use std::cell::OnceCell;
 use verify::Crossing;
@@ -87,15 +87,16 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     // the double words when those exist (about 2K instructions instead of
     // 20K).
     let (a, b) = (&scene.a, &scene.b);
-    let f = Line::<f64>::of(a, b)?.unit_sized();
+    let pair = Pair::of(a, b)?;
+    let f = Line::<f64>::of(&pair)?.unit_sized();
     let fine_cell = OnceCell::new();
-    let fine = || fine_cell.get_or_init(|| Line::<DwBall>::of(a, b)).as_ref();
+    let fine = || fine_cell.get_or_init(|| Line::<DwBall>::of(&pair)).as_ref();
     let line_cell = OnceCell::new();
     let line = || {
         line_cell
             .get_or_init(|| match fine_cell.get() {
                 Some(Some(fine)) => Some(fine.enclosed()),
-                _ => Line::<Interval>::of(a, b),
+                _ => Line::<Interval>::of(&pair),
             })
             .as_ref()
     };
@@ -134,19 +135,19 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     };
     // A crossing of the line: the double words first (the crossing's
     // proof needs them), then the intervals from them.
+    // The proof of the entry comes first: for a crossing inside the span
+    // (the usual case) the planes of the two normals cannot separate, and
+    // testing them first cost 7.6K instructions. For an entry after the
+    // span the ray is outside K for every u < u_in; otherwise (the proof
+    // failed, or the line crosses K before the span) the planes decide.
     let fine = fine()?;
     let line = line()?;
-    if [entry, exit].iter().any(|n| verify::apart(line, n)) {
-        return apart();
-    }
-    let inn = verify::crossing(line, fine, &entry, -1.0)?;
-    if inn.u.lo > 1.0 {
-        // Outside K for every u < u_in.
-        return apart();
-    }
-    if !(inn.u.lo > 0.0 && inn.u.hi < 1.0) {
-        return None;
-    }
+    let inn = match verify::crossing(line, fine, &entry, -1.0) {
+        Some(inn) if inn.u.lo > 0.0 && inn.u.hi < 1.0 => inn,
+        Some(inn) if inn.u.lo > 1.0 => return apart(),
+        _ if [entry, exit].iter().any(|n| verify::apart(line, n)) => return apart(),
+        _ => return None,
+    };
     let out = if options.first_contact_only {
         None
     } else {

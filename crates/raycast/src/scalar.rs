@@ -23,6 +23,8 @@ pub trait Scalar:
     fn root(self) -> Self;
     /// An enclosure of `x` (for `f64`: a value within an ulp of it).
     fn rat(x: &Rat) -> Self;
+    /// An enclosure of the integer `x` (for `f64`: its rounding).
+    fn int(x: i128) -> Self;
     /// Whether the value is finite (an enclosure that says something).
     fn known(self) -> bool;
     /// Whether the value is proven `> 0` (for `f64`: merely is).
@@ -44,6 +46,9 @@ impl Scalar for f64 {
         // `Rat::to_f64`'s correct rounding for short decimal numbers.
         Interval::from_rat(x).mid()
     }
+    fn int(x: i128) -> f64 {
+        Interval::from_i128(x).mid()
+    }
     fn known(self) -> bool {
         self.is_finite()
     }
@@ -64,6 +69,9 @@ impl Scalar for Interval {
     }
     fn rat(x: &Rat) -> Interval {
         Interval::from_rat(x)
+    }
+    fn int(x: i128) -> Interval {
+        Interval::from_i128(x)
     }
     fn known(self) -> bool {
         self.is_finite()
@@ -87,6 +95,9 @@ impl Scalar for DwBall {
     }
     fn rat(x: &Rat) -> DwBall {
         DwBall::from_rat(x)
+    }
+    fn int(x: i128) -> DwBall {
+        DwBall::from_i128(x)
     }
     fn known(self) -> bool {
         self.is_known()

@@ -89,12 +89,10 @@ fn first<T: Scalar>(line: &Line<T>, n: &V3<T>, h: T, gh: &V3<T>) -> (T, T, V3<T>
     (phi, d, grad, inv)
 }
 
-/// `∇φ(n)` alone (enclosed over a box for the mean-value form of the
-/// instant).
-pub fn gradient<T: Scalar>(line: &Line<T>, n: &V3<T>) -> V3<T> {
-    let ((ha, ga, _), (hb, gb, _)) = (support(&line.pa, n), support(&line.pb, n));
-    let g = std::array::from_fn(|i| ga[i] + gb[i]);
-    first(line, n, ha + hb, &g).2
+/// `∇φ(n)` from `h_K(n)` and `∇h_K(n)` ([`support_k`]'s first two), e.g.
+/// enclosed over a box for the mean-value form of the instant.
+pub fn gradient<T: Scalar>(line: &Line<T>, n: &V3<T>, h: T, gh: &V3<T>) -> V3<T> {
+    first(line, n, h, gh).2
 }
 
 /// The [`Jet`] of `φ` at `n` (each entry enclosed when `T` is an

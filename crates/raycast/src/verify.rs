@@ -188,7 +188,7 @@ impl<'a> System<'a> {
             if dot(&boxed, &line.v).sign() != Some(side as i32) {
                 return None;
             }
-            let hw = support_k(line, &boxed).2;
+            let (hk, gk, hw) = support_k(line, &boxed);
             let jj: [[Interval; 2]; 2] =
                 std::array::from_fn(|i| std::array::from_fn(|k| form(&self.fv[i], &hw, &ew[k])));
             let k: [Interval; 2] = std::array::from_fn(|i| {
@@ -201,7 +201,7 @@ impl<'a> System<'a> {
             if k.iter().all(|x| x.lo > -r && x.hi < r) {
                 let normal = offset(n, e, &k);
                 let step: V3<Interval> = std::array::from_fn(|i| ew[0][i] * k[0] + ew[1][i] * k[1]);
-                let u = enclosure(*phi) + dot(&gradient(line, &boxed), &step);
+                let u = enclosure(*phi) + dot(&gradient(line, &boxed, hk, &gk), &step);
                 let centre = axpy(&line.a0, u, &line.da);
                 let s = support_point(&line.pa, &normal);
                 let point = std::array::from_fn(|i| centre[i] + s[i]);
