@@ -118,40 +118,57 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
                 None
             };
         }
-        Guess::Crosses { entry, exit } => (
-            search::polish(&f, &entry, -1.0).ok_or(entry),
-            search::polish(&f, &exit, 1.0).ok_or(exit),
-        ),
+        Guess::Crosses { entry, exit } => (entry, exit),
     };
-    let (entry, exit) = match (entry, exit) {
-        (Ok(entry), Ok(exit)) => (entry, exit),
-        // The search left the side it started on: a near miss, where the
-        // two normals turn towards the plane parallel to the ray.
-        (entry, exit) => {
-            let [a, b] = [entry, exit].map(|n| n.unwrap_or_else(|n| n));
-            let plane = search::parallel(&f, &std::array::from_fn(|i| a[i] + b[i]));
-            return if separates(&[plane]) { apart() } else { None };
+    // The search leaving the side it started on signals a near miss, where
+    // the two normals turn towards the plane parallel to the ray.
+    let near_miss = |a: [f64; 3], b: [f64; 3]| {
+        let plane = search::parallel(&f, &std::array::from_fn(|i| a[i] + b[i]));
+        if separates(&[plane]) {
+            apart()
+        } else {
+            None
         }
     };
+    // The exit normal (or, when its search left its side, its guess) is
+    // polished only when needed: a first contact proven inside the span
+    // does not need it.
+    let exit_cell = OnceCell::new();
+    let exit = || *exit_cell.get_or_init(|| search::polish(&f, &exit, 1.0).ok_or(exit));
+    let entry = match search::polish(&f, &entry, -1.0) {
+        Some(n) => n,
+        None => return near_miss(entry, exit().unwrap_or_else(|n| n)),
+    };
+    if !options.first_contact_only {
+        if let Err(b) = exit() {
+            return near_miss(entry, b);
+        }
+    }
     // A crossing of the line: the double words first (the crossing's
     // proof needs them), then the intervals from them.
     // The proof of the entry comes first: for a crossing inside the span
     // (the usual case) the planes of the two normals cannot separate, and
     // testing them first cost 7.6K instructions. For an entry after the
     // span the ray is outside K for every u < u_in; otherwise (the proof
-    // failed, or the line crosses K before the span) the planes decide.
+    // failed, or the line crosses K before the span) a near miss or the
+    // planes decide.
     let fine = fine()?;
     let line = line()?;
     let inn = match verify::crossing(line, fine, &entry, -1.0) {
         Some(inn) if inn.u.lo > 0.0 && inn.u.hi < 1.0 => inn,
         Some(inn) if inn.u.lo > 1.0 => return apart(),
-        _ if [entry, exit].iter().any(|n| verify::apart(line, n)) => return apart(),
-        _ => return None,
+        _ => {
+            return match exit() {
+                Err(b) => near_miss(entry, b),
+                Ok(exit) if [entry, exit].iter().any(|n| verify::apart(line, n)) => apart(),
+                Ok(_) => None,
+            }
+        }
     };
     let out = if options.first_contact_only {
         None
     } else {
-        let out = verify::crossing(line, fine, &exit, 1.0)?;
+        let out = verify::crossing(line, fine, &exit().ok()?, 1.0)?;
         if !(out.u.lo > inn.u.hi && (out.u.hi < 1.0 || out.u.lo > 1.0)) {
             return None;
         }
