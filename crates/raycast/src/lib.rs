@@ -292,14 +292,16 @@ impl Answer {
             certified: true,
         };
         let crossed = matches!(self, Answer::Crosses(..));
-        let (timeline, found) = match self {
-            Answer::Apart => (vec![segment(State::Separate, &t0, &t1)], vec![]),
+        // Each list allocated once, at its final size.
+        let mut contacts = Vec::new();
+        let mut geometry = Vec::new();
+        let timeline = match self {
+            Answer::Apart => vec![segment(State::Separate, &t0, &t1)],
             Answer::Crosses(inn, out) => {
                 let i = &inn.instant;
-                let mut timeline = vec![
-                    segment(State::Separate, &t0, i),
-                    segment(State::Touch, i, i),
-                ];
+                let mut timeline = Vec::with_capacity(5);
+                timeline.push(segment(State::Separate, &t0, i));
+                timeline.push(segment(State::Touch, i, i));
                 if !options.first_contact_only {
                     match &out {
                         Some(out) => {
@@ -311,11 +313,14 @@ impl Answer {
                         None => timeline.push(segment(State::Overlap, i, &t1)),
                     }
                 }
-                (timeline, std::iter::once(inn).chain(out).collect())
+                contacts.reserve_exact(1 + usize::from(out.is_some()));
+                for c in std::iter::once(inn).chain(out) {
+                    contacts.push(c.instant);
+                    geometry.extend(c.geometry);
+                }
+                timeline
             }
         };
-        let (contacts, geometry): (Vec<Instant>, Vec<Option<Geometry>>) =
-            found.into_iter().map(|c| (c.instant, c.geometry)).unzip();
         let segment_geometry = if options.contact_geometry {
             vec![None; timeline.len()]
         } else {
@@ -335,7 +340,7 @@ impl Answer {
                 candidates: usize::from(crossed),
                 ..Stats::default()
             },
-            geometry: geometry.into_iter().flatten().collect(),
+            geometry,
             segment_geometry,
         }
     }
