@@ -30,7 +30,8 @@
 //! [`run`] answers only what it proves to the query's widths (instants
 //! within `10^(−digits)` of the span, the contact geometry within
 //! [`ccd_contact::Goal`]) and returns `None` otherwise — another motion
-//! kind, a ray that grazes `K` (entry and exit not separated), a crossing
+//! kind, a ray that grazes `K` (entry and exit not separated, for the
+//! whole timeline; a first contact needs only its entry), a crossing
 //! at `t0` or `t1` or before it, bodies at rest relative to each other, a
 //! width its enclosures do not reach (`--digits` beyond about 15 unless
 //! the instants happen to be that narrow): the caller then runs
