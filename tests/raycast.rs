@@ -272,16 +272,8 @@ proptest! {
         digits in prop_oneof![4 => Just(15u32), 1 => Just(0u32), 1 => Just(3u32), 1 => Just(12u32), 1 => 16u32..=19],
         geometry in prop_oneof![3 => Just(true), 1 => Just(false)],
     ) {
-        let samples: Vec<Rat> = samples
-            .into_iter()
-            .map(|(p, q)| Rat::from_frac(p.min(q), p.max(q) + 1))
-            .collect();
-        check_with(&scene, first, &samples, digits, geometry).map_err(TestCaseError::fail)?;
+        check_with(&scene, first, &fractions(samples), digits, geometry).map_err(TestCaseError::fail)?;
     }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(96))]
 
     /// The same agreement on short numbers, whose shapes and ray the ray
     /// cast forms exactly in `i128` (checked: the long pairs above take the
@@ -305,12 +297,16 @@ proptest! {
         let all: Vec<Rat> = centres(&scene.a).into_iter().chain(centres(&scene.b)).collect();
         let all: [&Rat; 12] = std::array::from_fn(|i| &all[i]);
         prop_assert!(shape(&scene.a) && shape(&scene.b) && small_over_common_denominator(all).is_some());
-        let samples: Vec<Rat> = samples
-            .into_iter()
-            .map(|(p, q)| Rat::from_frac(p.min(q), p.max(q) + 1))
-            .collect();
-        check_with(&scene, first, &samples, 15, geometry).map_err(TestCaseError::fail)?;
+        check_with(&scene, first, &fractions(samples), 15, geometry).map_err(TestCaseError::fail)?;
     }
+}
+
+/// Sample points `p/(q + 1)` in `[0, 1)` from pairs of positive integers.
+fn fractions(pairs: Vec<(i64, i64)>) -> Vec<Rat> {
+    pairs
+        .into_iter()
+        .map(|(p, q)| Rat::from_frac(p.min(q), p.max(q) + 1))
+        .collect()
 }
 
 /// The ray cast answers most of these pairs (so the agreement above is
