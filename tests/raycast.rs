@@ -15,6 +15,7 @@ use ccd_exact::{run, Geometry, Instant, Options, Outcome, Path, Scene, State};
 use ccd_motion::{Bezier, Body, Motion};
 use common::{state_at, static_state};
 use proptest::prelude::*;
+use proptest::sample::select;
 
 /// A decimal with up to `digits` digits after the point (long numbers:
 /// about 40 bits of numerator for 12 digits).
@@ -57,26 +58,72 @@ fn radii(digits: u32) -> impl Strategy<Value = [Rat; 3]> {
 /// 12-digit radii, 9-digit quaternions, 6-digit centres (the ray cast's
 /// shapes then overflow `i128` and are enclosed product by product).
 fn pair() -> impl Strategy<Value = Scene> {
-    pair_with([12, 9, 6])
+    pair_with(|| radii(12), || quat(9), |r| vec3(r, 6))
 }
 
 /// [`pair`] with short numbers, as in the shipped line scenes: 3-digit
 /// radii and centres, quaternions in tenths (the ray cast forms the shapes
 /// and the ray exactly in `i128`).
 fn short_pair() -> impl Strategy<Value = Scene> {
-    pair_with([3, 1, 3])
+    pair_with(|| radii(3), || quat(1), |r| vec3(r, 3))
 }
 
-/// [`pair`] with `[radii, quaternion, centre]` decimal digits.
-fn pair_with([r, q, c]: [u32; 3]) -> impl Strategy<Value = Scene> {
+/// [`pair`] at the edges of the ray cast's `i128` forms: integer
+/// quaternions of 18–30 bits and radii up to 3 over 1, 3, 7, 11 or 13, so that
+/// the shape's `S = M(q)·diag(m²)·M(q)ᵀ` and `d = |q|⁴·L²` land around
+/// `2^100…2^127` (some fit, some overflow and take the other route), and
+/// centres over denominators up to `2^31 − 1` (their common denominator
+/// fits `i64` or not).
+fn edge_pair() -> impl Strategy<Value = Scene> {
+    let radius = || {
+        (select(vec![1i64, 3, 7, 11, 13]), 0i64..1000)
+            .prop_map(|(d, k)| Rat::from_frac(1 + k % (3 * d), d))
+    };
+    let component = (18u32..=30, any::<bool>(), any::<u64>()).prop_map(|(bits, neg, x)| {
+        let m = (1i64 << (bits - 1)) | (x as i64 & ((1i64 << (bits - 1)) - 1));
+        Rat::from(if neg { -m } else { m })
+    });
+    let coordinate = |r: f64| {
+        (
+            select(vec![1i64, 3, 1000, 2_147_483_629, 2_147_483_647]),
+            -1.0..1.0f64,
+        )
+            .prop_map(move |(d, x)| Rat::from_frac((x * r * d as f64) as i64, d))
+    };
+    pair_with(
+        move || [radius(), radius(), radius()],
+        move || {
+            [
+                component.clone(),
+                component.clone(),
+                component.clone(),
+                component.clone(),
+            ]
+        },
+        move |r| [coordinate(r), coordinate(r), coordinate(r)],
+    )
+}
+
+/// A pair as [`pair`] describes, its numbers drawn by `radii`, `quat` and
+/// `point` (a point within the given distance of the origin).
+fn pair_with<R, Q, P>(
+    radii: impl Fn() -> R,
+    quat: impl Fn() -> Q,
+    point: impl Fn(f64) -> P,
+) -> impl Strategy<Value = Scene>
+where
+    R: Strategy<Value = [Rat; 3]>,
+    Q: Strategy<Value = [Rat; 4]>,
+    P: Strategy<Value = [Rat; 3]>,
+{
     (
-        radii(r),
-        radii(r),
-        quat(q),
-        quat(q),
-        vec3(12.0, c),
-        vec3(4.0, c),
-        vec3(1.0, c),
+        radii(),
+        radii(),
+        quat(),
+        quat(),
+        point(12.0),
+        point(4.0),
+        point(1.0),
         any::<bool>(),
         prop_oneof![Just(None), (-3i64..3, 1i64..4).prop_map(Some)],
     )
@@ -299,6 +346,69 @@ proptest! {
         prop_assert!(shape(&scene.a) && shape(&scene.b) && small_over_common_denominator(all).is_some());
         check_with(&scene, first, &fractions(samples), 15, geometry).map_err(TestCaseError::fail)?;
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The agreement at the edges of the `i128` forms ([`edge_pair`]),
+    /// where a body's shape is rounded once from an integer of up to 127
+    /// bits, or enclosed product by product after an overflow, one body
+    /// one way and the other the other way.
+    #[test]
+    fn raycast_at_the_edges_of_i128_agrees_with_the_exact_path(
+        scene in edge_pair(),
+        first in any::<bool>(),
+        samples in proptest::collection::vec((1i64..1000, 1i64..1000), 4),
+    ) {
+        check_with(&scene, first, &fractions(samples), 15, true).map_err(TestCaseError::fail)?;
+    }
+}
+
+/// [`edge_pair`] exercises both routes of each enclosure (integer forms
+/// that fit `i128` and those that overflow), and the ray cast answers most
+/// of its pairs: counted over a fixed run of the generator.
+#[test]
+fn edge_pairs_take_both_routes() {
+    use ccd_motion::matrices::{shape_small, small_over_common_denominator};
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{Config, TestRng, TestRunner};
+    let mut runner = TestRunner::new_with_rng(
+        Config::default(),
+        TestRng::deterministic_rng(proptest::test_runner::RngAlgorithm::ChaCha),
+    );
+    let (mut shapes, mut rays, mut answered, total) = ([0; 2], [0; 2], 0, 60);
+    for k in 0..total {
+        let scene = edge_pair()
+            .new_tree(&mut runner)
+            .expect("a scene")
+            .current();
+        let mut centres = Vec::new();
+        for body in [&scene.a, &scene.b] {
+            if let Motion::Translation {
+                center,
+                orientation,
+            } = &body.motion
+            {
+                shapes[usize::from(shape_small(&body.radii, orientation).is_some())] += 1;
+                centres.extend(center.points.iter().flatten());
+            }
+        }
+        let centres: [&Rat; 12] = std::array::from_fn(|i| centres[i]);
+        rays[usize::from(small_over_common_denominator(centres).is_some())] += 1;
+        answered += usize::from(
+            check(&scene, k % 2 == 0, &[]).unwrap_or_else(|e| panic!("scene {k}: {e}")),
+        );
+    }
+    assert!(
+        shapes.iter().all(|&n| n >= 20),
+        "shapes overflowed / fit: {shapes:?}"
+    );
+    assert!(
+        rays.iter().all(|&n| n >= 10),
+        "rays overflowed / fit: {rays:?}"
+    );
+    assert!(answered * 10 >= total * 8, "answered {answered} of {total}");
 }
 
 /// Sample points `p/(q + 1)` in `[0, 1)` from pairs of positive integers.
