@@ -10,9 +10,8 @@ use ccd_algorithm::{
 use ccd_arith::{Int, Interval, Rat};
 use ccd_classify::sign_variations;
 use ccd_contact::Case;
-use ccd_motion::{placed_quadric, CharPoly};
+use ccd_motion::{characteristic_at, placed_quadric, CharPoly};
 use ccd_poly::ZPoly;
-use ccd_quadric::characteristic;
 use ccd_scene::Scene;
 use ccd_solver::{RealRoot, RootIter, SignModel};
 use ccd_subres::{closed_forms, Quantity, QuarticInvariants};
@@ -295,10 +294,7 @@ impl<'s> Exact<'s> {
         }
         match &*early {
             Some(f) => f.at_scaled(u),
-            None => characteristic(
-                &self.bodies().a.quadric_at(u),
-                &self.bodies().b.quadric_at(u),
-            ),
+            None => characteristic_at(&self.bodies().a, &self.bodies().b, u),
         }
     }
 

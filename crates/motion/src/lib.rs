@@ -16,4 +16,4 @@ mod rounded;
 pub use characteristic::{char_poly, normalise, normalise_with, CharPoly};
 pub use error::MotionError;
 pub use kinds::{Bezier, Body, HelicalCenter, Mat34, Motion, Quat, Vec3};
-pub use matrices::{moving_quadric, placed_quadric, PlacedQuadric};
+pub use matrices::{characteristic_at, moving_quadric, placed_quadric, PlacedQuadric};
