@@ -101,9 +101,10 @@ pub fn crossing(
         }
         let (e, w) = (&newton.e, newton.yg.map(|x| x.mid()));
         let next = unit(&axpy(&axpy(&n, -w[0], &e[0]), -w[1], &e[1]))?;
-        if next == n {
+        if step > 0 && next == n {
             // Converged as far as an `f64` normal goes: another step would
-            // repeat this test.
+            // repeat this test (step 0's test used the `f64` Hessian, the
+            // next one the double-word Hessian at the same normal).
             return proven;
         }
         n = next;
