@@ -608,10 +608,11 @@ impl PlacedQuadric {
 /// ([`PlacedQuadric::quadric_at`]) when their entries are no longer than the
 /// placements' (rigid motions), else the Cauchy–Binet sum
 /// [`placed_characteristic`] over the placements' values at `u` (affine
-/// motions, whose inverse placements are three times longer). Bringing a
-/// placement to integers multiplies it by a positive `α`, which scales the
-/// coefficient of `λ^j` by `α^(2(4 − j))`: again a positive factor and a
-/// positive rescaling of `λ`.
+/// motions, whose inverse placements are three times longer). The frame's
+/// own nonzero factor and the lcm that brings a placement to integers
+/// multiply it by a nonzero `α`, which scales the coefficient of `λ^j` by
+/// `α^(2(4 − j)) > 0`: again a positive factor and a positive rescaling of
+/// `λ`.
 ///
 /// The state at `t0` of a first-contact query, before `f(λ; u)` exists:
 /// `bench-perturbed-affine-deg2-d0100` (100-digit radii) spent 9M
