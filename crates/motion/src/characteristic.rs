@@ -37,7 +37,7 @@ use crate::centred::{centred_characteristic, Centred, Offset};
 use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
-use crate::matrices::{placed_quadric, static_quadric, PlacedQuadric};
+use crate::matrices::{placed_quadric, static_quadric, through_quadrics, PlacedQuadric};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_quadric::{characteristic, placed_characteristic, Mat4};
@@ -89,16 +89,9 @@ impl CharPoly {
                 },
             };
         }
-        // Before normalisation, coefficient k of f has degree at most
-        // 2·(k·deg A + (4 − k)·deg B) in the entries of the inverse placements
-        // N (through the quadrics NᵀDN) or of the placements M (through
-        // Plücker coordinates): the route with the lower maximum wins; on a
-        // tie (rigid motions, whose inverse is a transpose) the quadrics,
-        // whose five determinants take fewer products than 70 coordinates.
-        let ((ma, na), (mb, nb)) = (a.degree_bounds(), b.degree_bounds());
         // Both routes first in i128 (short decimal inputs fit), exactly
         // in ZPoly if a number does not.
-        let f = if na.max(nb) <= ma.max(mb) {
+        let f = if through_quadrics(a, b) {
             // The quadrics themselves in i128 when they fit (they usually
             // do when f does).
             let (sa, sb) = (a.quadric_small(), b.quadric_small());

@@ -357,23 +357,15 @@ pub fn shape_small(radii: &[Rat; 3], q: &Quat) -> Option<(Mat3<i128>, i128)> {
         SmallInt::from_i128(den),
     );
     let rot = rotation_numerator(&q);
-    let m2 = m.map(|x| x.times(&x));
-    let mr: Mat3<SmallInt> = rot
-        .each_ref()
-        .map(|row| std::array::from_fn(|k| row[k].times(&m2[k])));
+    let transposed: Mat3<SmallInt> = std::array::from_fn(|k| std::array::from_fn(|i| rot[i][k]));
+    let s = congruence(&transposed, &m.map(|x| x.times(&x)));
     let n2 = norm2(&q);
     let d = n2.times(&n2).times(&den).times(&den).to_i128()?;
-    let mut s = [[0i128; 3]; 3];
-    for i in 0..3 {
-        for j in i..3 {
-            let e = (0..3).fold(SmallInt::zero(), |acc, k| {
-                acc.plus(&mr[i][k].times(&rot[j][k]))
-            });
-            s[i][j] = e.to_i128()?;
-            s[j][i] = s[i][j];
-        }
+    let mut out = [[0i128; 3]; 3];
+    for (o, e) in out.iter_mut().flatten().zip(s.iter().flatten()) {
+        *o = e.to_i128()?;
     }
-    Some((s, d))
+    Some((out, d))
 }
 
 /// A constant matrix divided by the gcd of its entries: what
@@ -598,6 +590,12 @@ impl PlacedQuadric {
         let n = integral(&self.frame.map(|p| p.eval_rat(u)).inverse());
         congruence(&n, &self.diagonal.each_ref().map(|e| e.coeff(0)))
     }
+
+    /// The placement at one parameter `u`, exactly, scaled to integers (a
+    /// nonzero multiple of `M(u)`).
+    pub fn placement_at(&self, u: &Rat) -> Mat4<Int> {
+        integral(&self.frame.map(|p| p.eval_rat(u)).forward())
+    }
 }
 
 /// `det(λ·A(u) + B(u))` of two placed bodies at one parameter `u`, exactly,
@@ -618,17 +616,27 @@ impl PlacedQuadric {
 /// `bench-perturbed-affine-deg2-d0100` (100-digit radii) spent 9M
 /// instructions there through the quadrics.
 pub fn characteristic_at(a: &PlacedQuadric, b: &PlacedQuadric, u: &Rat) -> [Int; 5] {
-    let ((ma, na), (mb, nb)) = (a.degree_bounds(), b.degree_bounds());
-    if na.max(nb) <= ma.max(mb) {
+    if through_quadrics(a, b) {
         return characteristic(&a.quadric_at(u), &b.quadric_at(u));
     }
-    let placement = |p: &PlacedQuadric| integral(&p.frame.map(|e| e.eval_rat(u)).forward());
     placed_characteristic(
-        &placement(a),
+        &a.placement_at(u),
         &a.diagonal_products::<Int>(),
-        &placement(b),
+        &b.placement_at(u),
         &b.diagonal_products::<Int>(),
     )
+}
+
+/// Which route forms `det(λA + B)` of two placed bodies: coefficient `k`
+/// has degree at most `2·(k·deg A + (4 − k)·deg B)` in the entries of the
+/// inverse placements `N` (through the quadrics `NᵀDN`) or of the
+/// placements `M` (through Plücker coordinates), so the route with the
+/// lower maximum wins; on a tie (rigid motions, whose inverse is a
+/// transpose) the quadrics, whose five determinants take fewer products
+/// than 70 coordinates.
+pub(crate) fn through_quadrics(a: &PlacedQuadric, b: &PlacedQuadric) -> bool {
+    let ((ma, na), (mb, nb)) = (a.degree_bounds(), b.degree_bounds());
+    na.max(nb) <= ma.max(mb)
 }
 
 /// A body's placement and body quadric, with the factors of the placement's
@@ -789,31 +797,7 @@ mod tests {
         ) {
             let r = |k: usize| Rat::from_frac(nums[k], dens[k]);
             let weights = weighted.then(|| weights.iter().map(|&w| Rat::from_frac(w, 2)).collect::<Vec<_>>());
-            let quat = |k: usize| -> Quat {
-                let q: Quat = std::array::from_fn(|i| r(k + i));
-                if q.iter().all(Rat::is_zero) { [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()] } else { q }
-            };
-            let vec3 = |k: usize| -> [Rat; 3] { std::array::from_fn(|i| r(k + i)) };
-            let centre = Bezier { points: vec![vec3(12), vec3(15), vec3(18)], weights: weights.clone() };
-            let motion = match kind {
-                0 => Motion::Static { center: vec3(12), orientation: quat(0) },
-                1 => Motion::Translation { center: centre, orientation: quat(0) },
-                2 => Motion::Rigid {
-                    orientation: Bezier { points: vec![quat(0), quat(4), quat(8)], weights: weights.clone() },
-                    center: centre,
-                },
-                _ => Motion::Affine {
-                    matrix: Bezier {
-                        points: (0..3)
-                            .map(|p| std::array::from_fn(|i| std::array::from_fn(|j| {
-                                let base = if i == j { Rat::from(8) } else { Rat::zero() };
-                                &base + &r(12 * p + 4 * i + j)
-                            })))
-                            .collect(),
-                        weights,
-                    },
-                },
-            };
+            let motion = sample_motion(kind, &r, 0, 3, weights);
             let body = Body { radii: [r(24).abs() + Rat::one(), Rat::from_frac(1, 2), r(25).abs() + Rat::from(2)], motion };
             let span = [Rat::zero(), Rat::one()];
             let Ok(placed) = placed_quadric(&body, &span) else {
@@ -972,6 +956,64 @@ mod tests {
         }
     }
 
+    /// A motion of `kind` (0 static, 1 translation, 2 rigid, 3 affine) of
+    /// `points` control points (weighted or not), its numbers `r(k + i)`:
+    /// quaternions from `r(k)`, `r(k + 4)`, …, centres from `r(k + 12)`,
+    /// `r(k + 15)`, …, affine matrices `8·I + (r(k + 12p + 4i + j))`.
+    fn sample_motion(
+        kind: usize,
+        r: &dyn Fn(usize) -> Rat,
+        k: usize,
+        points: usize,
+        weights: Option<Vec<Rat>>,
+    ) -> Motion {
+        let quat = |j: usize| -> Quat {
+            let q: Quat = std::array::from_fn(|i| r(k + j + i));
+            if q.iter().all(Rat::is_zero) {
+                [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()]
+            } else {
+                q
+            }
+        };
+        let vec3 = |j: usize| -> [Rat; 3] { std::array::from_fn(|i| r(k + j + i)) };
+        let centre = Bezier {
+            points: (0..points).map(|p| vec3(12 + 3 * p)).collect(),
+            weights: weights.clone(),
+        };
+        match kind {
+            0 => Motion::Static {
+                center: vec3(12),
+                orientation: quat(0),
+            },
+            1 => Motion::Translation {
+                center: centre,
+                orientation: quat(0),
+            },
+            2 => Motion::Rigid {
+                orientation: Bezier {
+                    points: (0..points).map(|p| quat(4 * p)).collect(),
+                    weights,
+                },
+                center: centre,
+            },
+            _ => Motion::Affine {
+                matrix: Bezier {
+                    points: (0..points)
+                        .map(|p| {
+                            std::array::from_fn(|i| {
+                                std::array::from_fn(|j| {
+                                    let base = if i == j { Rat::from(8) } else { Rat::zero() };
+                                    &base + &r(k + 12 * p + 4 * i + j)
+                                })
+                            })
+                        })
+                        .collect(),
+                    weights,
+                },
+            },
+        }
+    }
+
     /// `p = c·(s^j·q_j)` for some `c, s > 0`: the same quartic up to a
     /// positive factor and a positive rescaling of `λ`. Zero coefficients
     /// match; the ratios `r_j = p_j/q_j` of the others are positive and
@@ -1001,30 +1043,8 @@ mod tests {
             at in (0i64..9, 1i64..9),
         ) {
             let r = |k: usize| Rat::from_frac(nums[k], dens[k]);
-            let vec3 = |k: usize| -> [Rat; 3] { std::array::from_fn(|i| r(k + i)) };
             let body = |k: usize| {
-                let motion = if rigid {
-                    let quat = |j: usize| -> Quat {
-                        let q: Quat = std::array::from_fn(|i| r(k + j + i));
-                        if q.iter().all(Rat::is_zero) { [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()] } else { q }
-                    };
-                    Motion::Rigid {
-                        orientation: Bezier { points: vec![quat(0), quat(4)], weights: None },
-                        center: Bezier { points: vec![vec3(k + 8), vec3(k + 11)], weights: None },
-                    }
-                } else {
-                    Motion::Affine {
-                        matrix: Bezier {
-                            points: (0..2)
-                                .map(|p| std::array::from_fn(|i| std::array::from_fn(|j| {
-                                    let base = if i == j { Rat::from(8) } else { Rat::zero() };
-                                    &base + &r(k + 12 * p + 4 * i + j)
-                                })))
-                                .collect(),
-                            weights: None,
-                        },
-                    }
-                };
+                let motion = sample_motion(if rigid { 2 } else { 3 }, &r, k, 2, None);
                 Body { radii: [r(k).abs() + Rat::one(), Rat::from_frac(1, 2), r(k + 1).abs() + Rat::from(2)], motion }
             };
             let span = [Rat::zero(), Rat::one()];

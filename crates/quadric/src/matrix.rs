@@ -12,15 +12,17 @@ pub type Mat3<R> = [[R; 3]; 3];
 /// `Nᵀ · diag(d) · N`: the matrix of the quadric `Xᵀ diag(d) X = 0` after the
 /// change of coordinates `X ↦ N·X` (so if `N` maps world points to body
 /// points, this is the world quadric). Symmetric; the upper triangle is
-/// computed once.
-pub fn congruence<R: RingOps>(n: &Mat4<R>, d: &[R; 4]) -> Mat4<R> {
+/// computed once. Any size: 4×4 for quadrics, 3×3 for a body's shape
+/// matrix `R·diag(r²)·Rᵀ` (`N = Rᵀ`).
+pub fn congruence<R: RingOps, const N: usize>(n: &[[R; N]; N], d: &[R; N]) -> [[R; N]; N] {
     // scaled[k][j] = d_k · N[k][j]
-    let scaled: Mat4<R> = std::array::from_fn(|k| std::array::from_fn(|j| d[k].times(&n[k][j])));
-    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    for i in 0..4 {
-        for j in i..4 {
+    let scaled: [[R; N]; N] =
+        std::array::from_fn(|k| std::array::from_fn(|j| d[k].times(&n[k][j])));
+    let mut out: [[R; N]; N] = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for i in 0..N {
+        for j in i..N {
             let mut s = R::zero();
-            for k in 0..4 {
+            for k in 0..N {
                 if !n[k][i].is_zero() && !scaled[k][j].is_zero() {
                     s.add_product(&n[k][i], &scaled[k][j], false);
                 }

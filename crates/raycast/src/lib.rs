@@ -155,7 +155,9 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     // planes decide.
     let fine = fine()?;
     let line = line()?;
-    let inn = match verify::crossing(line, fine, &entry, -1.0) {
+    let system = verify::System::new(line, fine);
+    let crossing = |n: &[f64; 3], side| system.as_ref()?.crossing(n, side);
+    let inn = match crossing(&entry, -1.0) {
         Some(inn) if inn.u.lo > 0.0 && inn.u.hi < 1.0 => inn,
         Some(inn) if inn.u.lo > 1.0 => return apart(),
         _ => {
@@ -169,7 +171,7 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     let out = if options.first_contact_only {
         None
     } else {
-        let out = verify::crossing(line, fine, &exit().ok()?, 1.0)?;
+        let out = crossing(&exit().ok()?, 1.0)?;
         if !(out.u.lo > inn.u.hi && (out.u.hi < 1.0 || out.u.lo > 1.0)) {
             return None;
         }

@@ -62,6 +62,8 @@ pub struct Pair<'a> {
     /// `[c₀, v, a(0), a(1) − a(0)]` exactly as integers over one
     /// denominator, when every number fits `i128`.
     ray: Option<([V3<i128>; 4], i128)>,
+    /// [`Line::radii`].
+    radii: [f64; 2],
 }
 
 /// The vectors of [`Pair::ray`] from the centres `[[a(0), a(1)], [b(0), b(1)]]`.
@@ -89,11 +91,18 @@ impl<'a> Pair<'a> {
         let (cb, qb) = straight(b)?;
         let bodies = [(&a.radii, qa), (&b.radii, qb)];
         let centres = [ca, cb];
+        // Within an ulp (the tolerances carry a margin of 10⁻⁹).
+        let sizes: [f64; 6] =
+            std::array::from_fn(|i| Interval::from_rat(&bodies[i / 3].0[i % 3]).mid());
         Some(Pair {
             centres,
             bodies,
             exact: bodies.map(|(r, q)| ccd_motion::matrices::shape_small(r, q)),
             ray: small_ray(&centres),
+            radii: [
+                sizes.into_iter().fold(0.0, f64::max),
+                sizes.into_iter().fold(f64::INFINITY, f64::min),
+            ],
         })
     }
 
@@ -146,11 +155,6 @@ impl<T: Scalar + RingOps> Line<T> {
     /// enclosure overflows.
     pub fn of(pair: &Pair) -> Option<Line<T>> {
         let [c0, v, a0, da] = pair.ray();
-        // Within an ulp (the tolerances carry a margin of 10⁻⁹).
-        let sizes: [f64; 6] = std::array::from_fn(|i| {
-            let radii = pair.bodies[i / 3].0;
-            Interval::from_rat(&radii[i % 3]).mid()
-        });
         let line = Line {
             pa: pair.shape(0),
             pb: pair.shape(1),
@@ -158,10 +162,7 @@ impl<T: Scalar + RingOps> Line<T> {
             v,
             a0,
             da,
-            radii: [
-                sizes.into_iter().fold(0.0, f64::max),
-                sizes.into_iter().fold(f64::INFINITY, f64::min),
-            ],
+            radii: pair.radii,
         };
         let finite = |x: &T| x.known();
         let all = [&line.pa, &line.pb]
@@ -277,7 +278,7 @@ mod tests {
             prop_assume!(nonzero(&a) && nonzero(&b));
             let pair = Pair::of(&a, &b).expect("both straight");
             prop_assert!(pair.exact.iter().all(Option::is_some) && pair.ray.is_some());
-            let generic = Pair { centres: pair.centres, bodies: pair.bodies, exact: [None, None], ray: None };
+            let generic = Pair { exact: [None, None], ray: None, ..pair };
             // The exact values: the integer shapes (exact by ccd-motion's
             // tests) and the vectors from the centres in rationals.
             let shapes: [M3<Rat>; 2] = std::array::from_fn(|k| {

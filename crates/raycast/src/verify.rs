@@ -9,7 +9,7 @@ use crate::search::{basis, inverse2, unit};
 use crate::support::{boundary_point, clearance, gradient, support_k, support_point};
 use ccd_arith::{DwBall, Interval};
 
-/// Box radii tried by [`crossing`], each 16 times the last.
+/// Box radii tried by [`System::crossing`], each 16 times the last.
 const TRIES: usize = 4;
 /// Newton steps from the double-word `G(0)` after a test that fails or
 /// encloses the instant wider than [`narrow`] (near a graze the first
@@ -59,67 +59,15 @@ fn offset<T: Scalar>(n: &V3<f64>, e: &[V3<f64>; 2], w: &[T; 2]) -> V3<T> {
     axpy(&axpy(&n, w[0], &lift(&e[0])), w[1], &lift(&e[1]))
 }
 
-/// The crossing on `side` (`−1`: the entry, where `n·v < 0`; `+1`: the
-/// exit) proven near the search's normal `n` (unit), or `None`.
-///
-/// The stationary normals of `φ` are where K's boundary point
-/// `∇h_K(n)` lies on the ray's line (`D·∇φ = ∇h_K − c₀ − φ·v` and
-/// `∇φ·n = 0`), so with `E = basis(n)` and `F = (v × a₁, v × a₂)` (two
-/// vectors exactly orthogonal to `v`, spanning `v⊥`),
-/// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` vanishes exactly at them — with no
-/// division by `D = n·v`, which near a graze is small and, in `φ`'s own
-/// derivatives, swamps an enclosure over a box with its dependency.
-/// Krawczyk's operator `K(W) = −Y·G(0) + (I − Y·J(W))·W` over the box
-/// `W = [−r, r]²`, `J = Fᵀ∇²h_K E` enclosed over it and `Y ≈ J(0)⁻¹`, lying
-/// inside `W` proves one zero `w*` of `G` in `K(W)` (Krawczyk 1969; Moore,
-/// Kearfott & Cloud, *Introduction to Interval Analysis*, §8.2); `n·v`
-/// keeping the sign of `side` over `W` makes `n* = n + Ew*` the entry (or
-/// the exit) normal ([`crate::support`]), and the mean value form
-/// `φ(n*) ∈ φ(n) + ∇φ(n + EW)·Ew*` encloses the instant.
-///
-/// `G(0)` and `φ(n)` are cancellations, evaluated in double words (`fine`:
-/// the same ray); in `f64` intervals they leave the instant and the box a
-/// few `10⁻¹⁵` wide. Near a graze the `f64` search stops short of `n*`
-/// (its gradient is only as good as `f64` allows), and the test fails or
-/// encloses the instant wide: up to eight (`REFINE_STEPS`) Newton steps from the
-/// double-word `G(0)` then move `n` closer and the test runs again.
-pub fn crossing(
-    line: &Line<Interval>,
-    fine: &Line<DwBall>,
-    n: &V3<f64>,
-    side: f64,
-) -> Option<Crossing> {
-    let system = System::new(line, fine)?;
-    let mut n = *n;
-    for step in 0..=REFINE_STEPS {
-        let newton = system.newton(&n, step > 0)?;
-        let proven = system.krawczyk(&n, &newton, side);
-        match proven {
-            Some(c) if step == REFINE_STEPS || c.u.width() <= narrow(&c.u) => return Some(c),
-            _ if step == REFINE_STEPS => return None,
-            _ => {}
-        }
-        let (e, w) = (&newton.e, newton.yg.map(|x| x.mid()));
-        let next = unit(&axpy(&axpy(&n, -w[0], &e[0]), -w[1], &e[1]))?;
-        if step > 0 && next == n {
-            // Converged as far as an `f64` normal goes: another step would
-            // repeat this test (step 0's test used the `f64` Hessian, the
-            // next one the double-word Hessian at the same normal).
-            return proven;
-        }
-        n = next;
-    }
-    None
-}
-
 /// About two ulps of the instant: an enclosure no wider needs no further
 /// Newton step.
 fn narrow(u: &Interval) -> f64 {
     (4.0 * f64::EPSILON * u.hi.abs()).max(1e-17)
 }
 
-/// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` of one ray ([`crossing`]).
-struct System<'a> {
+/// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` of one ray, set up once per query for
+/// its entry and its exit ([`System::crossing`]).
+pub struct System<'a> {
     line: &'a Line<Interval>,
     fine: &'a Line<DwBall>,
     f: Line<f64>,
@@ -140,7 +88,9 @@ struct Newton {
 }
 
 impl<'a> System<'a> {
-    fn new(line: &'a Line<Interval>, fine: &'a Line<DwBall>) -> Option<System<'a>> {
+    /// The system of the ray enclosed in `line` (`f64` intervals) and
+    /// `fine` (double words), or `None` for a velocity of no usable size.
+    pub fn new(line: &'a Line<Interval>, fine: &'a Line<DwBall>) -> Option<System<'a>> {
         let f = line.mid();
         // `v × a` for two f64 vectors `a` across `v`: exactly orthogonal
         // to the true `v` (enclosed with it), which a rounded basis of
@@ -160,6 +110,53 @@ impl<'a> System<'a> {
             fv: across.map(|a| cross(&line.v, &lift(&a))),
             fd: across.map(|a| cross(&fine.v, &lift(&a))),
         })
+    }
+
+    /// The crossing on `side` (`−1`: the entry, where `n·v < 0`; `+1`: the
+    /// exit) proven near the search's normal `n` (unit), or `None`.
+    ///
+    /// The stationary normals of `φ` are where K's boundary point
+    /// `∇h_K(n)` lies on the ray's line (`D·∇φ = ∇h_K − c₀ − φ·v` and
+    /// `∇φ·n = 0`), so with `E = basis(n)` and `F = (v × a₁, v × a₂)` (two
+    /// vectors exactly orthogonal to `v`, spanning `v⊥`),
+    /// `G(w) = Fᵀ(∇h_K(n + Ew) − c₀)` vanishes exactly at them — with no
+    /// division by `D = n·v`, which near a graze is small and, in `φ`'s own
+    /// derivatives, swamps an enclosure over a box with its dependency.
+    /// Krawczyk's operator `K(W) = −Y·G(0) + (I − Y·J(W))·W` over the box
+    /// `W = [−r, r]²`, `J = Fᵀ∇²h_K E` enclosed over it and `Y ≈ J(0)⁻¹`, lying
+    /// inside `W` proves one zero `w*` of `G` in `K(W)` (Krawczyk 1969; Moore,
+    /// Kearfott & Cloud, *Introduction to Interval Analysis*, §8.2); `n·v`
+    /// keeping the sign of `side` over `W` makes `n* = n + Ew*` the entry (or
+    /// the exit) normal ([`crate::support`]), and the mean value form
+    /// `φ(n*) ∈ φ(n) + ∇φ(n + EW)·Ew*` encloses the instant.
+    ///
+    /// `G(0)` and `φ(n)` are cancellations, evaluated in double words (`fine`:
+    /// the same ray); in `f64` intervals they leave the instant and the box a
+    /// few `10⁻¹⁵` wide. Near a graze the `f64` search stops short of `n*`
+    /// (its gradient is only as good as `f64` allows), and the test fails or
+    /// encloses the instant wide: up to eight (`REFINE_STEPS`) Newton steps from the
+    /// double-word `G(0)` then move `n` closer and the test runs again.
+    pub fn crossing(&self, n: &V3<f64>, side: f64) -> Option<Crossing> {
+        let mut n = *n;
+        for step in 0..=REFINE_STEPS {
+            let newton = self.newton(&n, step > 0)?;
+            let proven = self.krawczyk(&n, &newton, side);
+            match proven {
+                Some(c) if step == REFINE_STEPS || c.u.width() <= narrow(&c.u) => return Some(c),
+                _ if step == REFINE_STEPS => return None,
+                _ => {}
+            }
+            let (e, w) = (&newton.e, newton.yg.map(|x| x.mid()));
+            let next = unit(&axpy(&axpy(&n, -w[0], &e[0]), -w[1], &e[1]))?;
+            if step > 0 && next == n {
+                // Converged as far as an `f64` normal goes: another step would
+                // repeat this test (step 0's test used the `f64` Hessian, the
+                // next one the double-word Hessian at the same normal).
+                return proven;
+            }
+            n = next;
+        }
+        None
     }
 
     /// `G(0)` in double words at `n`, and `Y` from the `f64` Hessian of
@@ -228,6 +225,16 @@ impl<'a> System<'a> {
 mod tests {
     use super::*;
     use crate::search::polish;
+
+    /// [`System::crossing`] of a ray set up for this one test.
+    fn crossing(
+        line: &Line<Interval>,
+        fine: &Line<DwBall>,
+        n: &V3<f64>,
+        side: f64,
+    ) -> Option<Crossing> {
+        System::new(line, fine)?.crossing(n, side)
+    }
     use ccd_arith::Rat;
 
     /// Spheres of radii 1 and 2 (K: the ball of radius 3), the ray
