@@ -14,6 +14,15 @@ use std::sync::Arc;
 /// proven, the exact Bernstein test on `q` runs besides the enclosures.
 const EXACT_SIGN_ROUND: u32 = 3;
 
+/// The `−log2` of the width down to which [`RealRoot::sign_with`]
+/// narrows an enclosure before its first Taylor forms: on a wider one
+/// (an isolating interval, typically `2^(−2)`…`2^(−9)` of the span) their
+/// remainder, which grows with the squared width, seldom decides, and the
+/// two enclosures they need cost about what the narrowing does, which the
+/// sign then needs anyway (affine-deg2: 18 signs at 6 roots, of which 11
+/// reached the Taylor forms there and 5 decided).
+const WIDE_SIGN_LOG2: i64 = 10;
+
 /// `−log2` of a positive rational, rounded up (within one bit), from bit
 /// lengths alone.
 fn neg_log2(r: &Rat) -> i64 {
@@ -202,6 +211,10 @@ enum Jump {
     Failed,
     /// No progress because the enclosure is at the root's float resolution.
     AtResolution,
+    /// Progress, to the root's float resolution (the cuts at `eps` from
+    /// the guess, not at the target's): a further jump would find it
+    /// there.
+    Resolved,
 }
 
 /// A real root `α` of a squarefree `p` (the function of a [`SignModel`]
@@ -311,6 +324,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// over `|p′(x)|`): closer cuts could not be signed in `f64`, and exact
     /// signs this close to the root are [`RealRoot::exact_newton_jump`]'s
     /// job, which needs two exact evaluations for any number of bits.
+    /// Progress with cuts at that floor rather than at the target's
+    /// `target/4` is [`Jump::Resolved`]: another jump would only find the
+    /// enclosure at the resolution (about 25K instructions a root for
+    /// nothing).
     fn newton_jump(&mut self, target: &Rat) -> Jump {
         let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
         let mut x = 0.5 * (lo_f + hi_f);
@@ -328,7 +345,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
             x = nx;
         }
         let resolution = self.base.enclose(Interval::point(x)).width() / slope.abs();
-        let eps = (target.to_f64() * 0.25)
+        let quarter = target.to_f64() * 0.25;
+        let eps = quarter
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
         let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
@@ -345,7 +363,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
             Rat::dyadic_in(&b0, &b1),
             |root: &RealRoot<M>, x: &Rat| root.base.float_sign_at(x),
         ) {
-            Jump::Progress
+            if quarter < eps {
+                Jump::Resolved
+            } else {
+                Jump::Progress
+            }
         } else if 8.0 * eps >= hi_f - lo_f {
             Jump::AtResolution
         } else {
@@ -727,6 +749,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
             if float_newton && float_wait == 0 {
                 match self.newton_jump(max_width) {
                     Jump::Progress => continue,
+                    // The next jump would stop at the resolution: the
+                    // exact steps follow at once.
+                    Jump::Resolved => {
+                        float_newton = false;
+                        continue;
+                    }
                     Jump::Failed => float_wait = 2,
                     Jump::AtResolution => float_newton = false,
                 }
@@ -874,86 +902,91 @@ impl<M: SignModel + Clone> RealRoot<M> {
             if let Some(s) = decided(model.enclose(whole)) {
                 return Some(s);
             }
-            let m = Rat::dyadic_in(&self.lo, &self.hi);
-            let second = model.enclose_second(whole);
-            // The Taylor forms from double-word balls first: they decide
-            // only where the exact forms below would, with the same sign,
-            // and tell when those would not decide either.
-            let ball = model
-                .ball_jet_at(&m)
-                .and_then(|jet| self.ball_round(&m, &jet, second))
-                .or_else(|| {
-                    model
-                        .big_jet_at(&m, SIGN_BALL_BITS)
-                        .and_then(|jet| self.ball_round(&m, &jet, second))
-                });
-            let value_zero = match ball {
-                Some(BallRound::Sign(s)) => return Some(s),
-                Some(BallRound::Open {
-                    value_zero: Some(zero),
-                }) => zero,
-                // From round 1 on the zero test runs whatever q(m) is.
-                Some(BallRound::Open { value_zero: None }) if round >= 1 => false,
-                _ => {
-                    let jet = model.exact_jet_at(&m);
-                    let (qm, dqm) = jet.enclose();
-                    let (ol, oh) = self.offsets(&m);
-                    if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
-                        return Some(s);
-                    }
-                    // The same Taylor form with its linear part kept exact:
-                    // no underflow however small `q(α)` is beside `q`'s
-                    // coefficients.
-                    if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
-                        return Some(s);
-                    }
-                    qm.contains_zero()
-                }
-            };
-            if !nonzero && (round >= 1 || value_zero) {
-                if self.vanishes_with(model) {
-                    return Some(0);
-                }
-                nonzero = true;
-            }
-            // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
-            // Bernstein coefficients over `I` decides as soon as `I` is free
-            // of `q`'s roots. Its cost grows with the enclosure's bits, and
-            // the exact Taylor form decides about as early whenever the
-            // `f64` bound on `q″` is finite: so it runs at rounds 3, 6, 12, …
-            // (and whenever that bound overflowed).
-            let scheduled =
-                round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
             let width = self.width();
-            if nonzero && (scheduled || !second.is_finite()) {
-                // Where an exact evaluation of `q` is costly, `q`
-                // re-centred next to `I` first, once per call
-                // (`Local::near`; re-centring it whenever the width's bits
-                // had doubled cost 0.2 s on two slow cases and gained on
-                // none). Its enclosure over `I` decides about where the
-                // test would (a sign it proves is the sign; it may decide
-                // a round earlier, which leaves a wider enclosure than
-                // before: a change of outputs, but not of any shipped
-                // scene's, where it never runs), at a fraction of the cost.
-                let q = model.exact();
-                let mut skip = false;
-                let cost = Cost::of(q);
-                if cost.costly(&self.lo) {
-                    let local = near.get_or_insert_with(|| {
-                        Local::near(q, &self.lo, &self.hi, neg_log2(&width).max(0) as u64)
+            // A wide enclosure is narrowed first (`WIDE_SIGN_LOG2`), as
+            // the forms below failing on it would have it.
+            let wide = round == 0 && width.mul_pow2(WIDE_SIGN_LOG2) >= Rat::one();
+            if !wide {
+                let m = Rat::dyadic_in(&self.lo, &self.hi);
+                let second = model.enclose_second(whole);
+                // The Taylor forms from double-word balls first: they decide
+                // only where the exact forms below would, with the same sign,
+                // and tell when those would not decide either.
+                let ball = model
+                    .ball_jet_at(&m)
+                    .and_then(|jet| self.ball_round(&m, &jet, second))
+                    .or_else(|| {
+                        model
+                            .big_jet_at(&m, SIGN_BALL_BITS)
+                            .and_then(|jet| self.ball_round(&m, &jet, second))
                     });
-                    if let Some(l) = local {
-                        let ladder = cost.sign_ladder(&self.lo);
-                        if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
+                let value_zero = match ball {
+                    Some(BallRound::Sign(s)) => return Some(s),
+                    Some(BallRound::Open {
+                        value_zero: Some(zero),
+                    }) => zero,
+                    // From round 1 on the zero test runs whatever q(m) is.
+                    Some(BallRound::Open { value_zero: None }) if round >= 1 => false,
+                    _ => {
+                        let jet = model.exact_jet_at(&m);
+                        let (qm, dqm) = jet.enclose();
+                        let (ol, oh) = self.offsets(&m);
+                        if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
                             return Some(s);
                         }
-                        // A root of q in I: the test cannot decide.
-                        skip = l.changes_sign(&self.lo, &self.hi, ladder);
+                        // The same Taylor form with its linear part kept exact:
+                        // no underflow however small `q(α)` is beside `q`'s
+                        // coefficients.
+                        if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
+                            return Some(s);
+                        }
+                        qm.contains_zero()
                     }
+                };
+                if !nonzero && (round >= 1 || value_zero) {
+                    if self.vanishes_with(model) {
+                        return Some(0);
+                    }
+                    nonzero = true;
                 }
-                if !skip {
-                    if let Some(s) = descartes_sign(q, &self.lo, &self.hi, &width) {
-                        return Some(s);
+                // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
+                // Bernstein coefficients over `I` decides as soon as `I` is free
+                // of `q`'s roots. Its cost grows with the enclosure's bits, and
+                // the exact Taylor form decides about as early whenever the
+                // `f64` bound on `q″` is finite: so it runs at rounds 3, 6, 12, …
+                // (and whenever that bound overflowed).
+                let scheduled =
+                    round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
+                if nonzero && (scheduled || !second.is_finite()) {
+                    // Where an exact evaluation of `q` is costly, `q`
+                    // re-centred next to `I` first, once per call
+                    // (`Local::near`; re-centring it whenever the width's bits
+                    // had doubled cost 0.2 s on two slow cases and gained on
+                    // none). Its enclosure over `I` decides about where the
+                    // test would (a sign it proves is the sign; it may decide
+                    // a round earlier, which leaves a wider enclosure than
+                    // before: a change of outputs, but not of any shipped
+                    // scene's, where it never runs), at a fraction of the cost.
+                    let q = model.exact();
+                    let mut skip = false;
+                    let cost = Cost::of(q);
+                    if cost.costly(&self.lo) {
+                        let local = near.get_or_insert_with(|| {
+                            Local::near(q, &self.lo, &self.hi, neg_log2(&width).max(0) as u64)
+                        });
+                        if let Some(l) = local {
+                            let ladder = cost.sign_ladder(&self.lo);
+                            if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
+                                return Some(s);
+                            }
+                            // A root of q in I: the test cannot decide.
+                            skip = l.changes_sign(&self.lo, &self.hi, ladder);
+                        }
+                    }
+                    if !skip {
+                        if let Some(s) = descartes_sign(q, &self.lo, &self.hi, &width) {
+                            return Some(s);
+                        }
                     }
                 }
             }
