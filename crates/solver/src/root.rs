@@ -21,7 +21,7 @@ const EXACT_SIGN_ROUND: u32 = 3;
 /// two enclosures they need cost about what the narrowing does, which the
 /// sign then needs anyway (affine-deg2: 18 signs at 6 roots, of which 11
 /// reached the Taylor forms there and 5 decided).
-const WIDE_SIGN_LOG2: i64 = 10;
+pub(crate) const WIDE_SIGN_LOG2: i64 = 10;
 
 /// `−log2` of a positive rational, rounded up (within one bit), from bit
 /// lengths alone.

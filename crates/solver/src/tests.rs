@@ -939,23 +939,37 @@ proptest! {
     /// `RealRoot::sign_within` gives the unbounded sign or `None`, and
     /// `None` only once its enclosure is narrower than the bound;
     /// `RealRoot::vanishes_with` is `sign_with(..) == 0`. The roots: `1/3`,
-    /// `1/3 + 2^(−gap)` and `1/2` (exact: `lo = hi`); the quantities: lines
-    /// through points `2^(−off)` on either side of the root, through the
-    /// root, and through the root's neighbour.
+    /// `1/3 + 2^(−gap)`, `1/2` (exact: `lo = hi`) and `√2 − 1/2` (alone on
+    /// a wide isolating interval, which the first round narrows before
+    /// its Taylor forms: `WIDE_SIGN_LOG2`); the quantities: lines through
+    /// points `2^(−off)` on either side of the root, through the root, and
+    /// through the root's neighbour.
     #[test]
     fn bounded_signs_and_zero_tests_agree_with_the_signs(
         gap in 20u64..300,
         off in 1u64..300,
-        k in 0usize..3,
-        bound in 8i64..200,
+        k in 0usize..4,
+        bound in 1i64..200,
     ) {
         let a = Rat::from_frac(1, 3);
         let roots = [a.clone(), &a + &pow2(gap), Rat::from_frac(1, 2)];
-        let p = product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>());
+        // (t + 1/2)² − 2 = t² + t − 7/4, times 4.
+        let far = ZPoly::from_i64s(&[-7, 4, 4]);
+        let p = &product(&roots.iter().map(|r| (r.clone(), 1)).collect::<Vec<_>>()) * &far;
         let found = all_roots(&p, &Rat::zero(), &Rat::one());
-        prop_assert_eq!(found.len(), 3);
-        let alpha = &roots[k];
-        let neighbour = &roots[(k + 1) % 3];
+        prop_assert_eq!(found.len(), 4);
+        prop_assert!(found[3].width().mul_pow2(crate::root::WIDE_SIGN_LOG2) >= Rat::one());
+        // √2 − 1/2 within 2^(−400), [lo, hi]: the lines' points are
+        // rational (lo stands for the root).
+        let (far_lo, far_hi) = {
+            let mut r = found[3].clone();
+            r.refine_to(&pow2(400));
+            (r.lo().clone(), r.hi().clone())
+        };
+        let all = [roots[0].clone(), roots[1].clone(), roots[2].clone(), far_lo.clone()];
+        let (alpha_lo, alpha_hi) = if k == 3 { (&far_lo, &far_hi) } else { (&all[k], &all[k]) };
+        let alpha = &all[k];
+        let neighbour = &all[(k + 1) % 4];
         for q in [
             linear(&(alpha + &pow2(off))),
             linear(&(alpha - &pow2(off))),
@@ -969,7 +983,7 @@ proptest! {
                 Some(s) => prop_assert_eq!(s, exact),
                 None => prop_assert!(bounded.width() < pow2(bound as u64), "{bound}"),
             }
-            prop_assert!(bounded.lo() <= alpha && alpha <= bounded.hi());
+            prop_assert!(bounded.lo() <= alpha_hi && alpha_lo <= bounded.hi());
             prop_assert_eq!(found[k].vanishes_with(&model), exact == 0);
         }
     }
