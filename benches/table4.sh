@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo bench -q -p ccd-benches --bench ccd >&2
 cargo bench -q -p ccd-benches --bench float >&2
-CARGO_TARGET_DIR=target/gmp cargo bench -q -p ccd-benches --bench ccd --features gmp >&2
+CARGO_TARGET_DIR="$PWD/target/gmp" cargo bench -q -p ccd-benches --bench ccd --features gmp >&2
 python3 - <<'PY'
 import json, glob, os
 
