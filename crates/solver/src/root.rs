@@ -853,7 +853,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `g | p` has at most the one root `α` there, that is a sign change of
     /// `g` between the ends. First, though, one image modulo a word prime
     /// usually proves `gcd(p, q) = 1` ([`SignModel::residues`]): then
-    /// `q(α) ≠ 0` without forming `q` (same answer, same rounds). Between rounds the interval is refined (each
+    /// `q(α) ≠ 0` without forming `q` (same answer, same rounds). A
+    /// first round on an enclosure at least `2^(−10)` wide tries 1 only
+    /// (`WIDE_SIGN_LOG2`): the Taylor forms' remainder grows with the
+    /// squared width. Between rounds the interval is refined (each
     /// step proven by exact signs of `p`): by 16 bits in the first rounds, then
     /// by twice as many each round, in at most 32 steps (`SIGN_NARROW_STEPS`)
     /// (a round after one cut short asks for the same bits again).
