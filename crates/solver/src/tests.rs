@@ -978,6 +978,11 @@ proptest! {
         ] {
             let model = crate::SignProbe::new(&q);
             let exact = found[k].clone().sign_with(&model);
+            // Ground truth: q is a line through a point at least 2^(−299)
+            // from α, or through α itself (k < 3), or through the rational
+            // just below √2 − 1/2 (k = 3): its sign at α is its sign at
+            // alpha_hi.
+            prop_assert_eq!(exact, q.sign_at(alpha_hi));
             let mut bounded = found[k].clone();
             match bounded.sign_within(&model, Some(bound)) {
                 Some(s) => prop_assert_eq!(s, exact),
