@@ -332,18 +332,8 @@ proptest! {
         samples in proptest::collection::vec((1i64..1000, 1i64..1000), 4),
         geometry in any::<bool>(),
     ) {
-        use ccd_motion::matrices::{shape_small, small_over_common_denominator};
-        let shape = |b: &Body| match &b.motion {
-            Motion::Translation { orientation, .. } => shape_small(&b.radii, orientation).is_some(),
-            _ => false,
-        };
-        let centres = |b: &Body| match &b.motion {
-            Motion::Translation { center, .. } => center.points.iter().flatten().cloned().collect::<Vec<_>>(),
-            _ => Vec::new(),
-        };
-        let all: Vec<Rat> = centres(&scene.a).into_iter().chain(centres(&scene.b)).collect();
-        let all: [&Rat; 12] = std::array::from_fn(|i| &all[i]);
-        prop_assert!(shape(&scene.a) && shape(&scene.b) && small_over_common_denominator(all).is_some());
+        let (shapes, ray) = integer_routes(&scene);
+        prop_assert!(shapes.iter().all(|&s| s) && ray);
         check_with(&scene, first, &fractions(samples), 15, geometry).map_err(TestCaseError::fail)?;
     }
 }
@@ -370,7 +360,6 @@ proptest! {
 /// of its pairs: counted over a fixed run of the generator.
 #[test]
 fn edge_pairs_take_both_routes() {
-    use ccd_motion::matrices::{shape_small, small_over_common_denominator};
     use proptest::strategy::ValueTree;
     use proptest::test_runner::{Config, TestRng, TestRunner};
     let mut runner = TestRunner::new_with_rng(
@@ -383,19 +372,11 @@ fn edge_pairs_take_both_routes() {
             .new_tree(&mut runner)
             .expect("a scene")
             .current();
-        let mut centres = Vec::new();
-        for body in [&scene.a, &scene.b] {
-            if let Motion::Translation {
-                center,
-                orientation,
-            } = &body.motion
-            {
-                shapes[usize::from(shape_small(&body.radii, orientation).is_some())] += 1;
-                centres.extend(center.points.iter().flatten());
-            }
+        let (fits, ray) = integer_routes(&scene);
+        for fit in fits {
+            shapes[usize::from(fit)] += 1;
         }
-        let centres: [&Rat; 12] = std::array::from_fn(|i| centres[i]);
-        rays[usize::from(small_over_common_denominator(centres).is_some())] += 1;
+        rays[usize::from(ray)] += 1;
         answered += usize::from(
             check(&scene, k % 2 == 0, &[]).unwrap_or_else(|e| panic!("scene {k}: {e}")),
         );
@@ -409,6 +390,25 @@ fn edge_pairs_take_both_routes() {
         "rays overflowed / fit: {rays:?}"
     );
     assert!(answered * 10 >= total * 8, "answered {answered} of {total}");
+}
+
+/// Which of the ray cast's enclosures of a pair of translating bodies take
+/// the exact `i128` route: each body's shape, and the ray's vectors.
+fn integer_routes(scene: &Scene) -> ([bool; 2], bool) {
+    use ccd_motion::matrices::{shape_small, small_over_common_denominator};
+    let mut centres = Vec::new();
+    let shapes = [&scene.a, &scene.b].map(|body| match &body.motion {
+        Motion::Translation {
+            center,
+            orientation,
+        } => {
+            centres.extend(center.points.iter().flatten());
+            shape_small(&body.radii, orientation).is_some()
+        }
+        _ => false,
+    });
+    let centres: [&Rat; 12] = std::array::from_fn(|i| centres[i]);
+    (shapes, small_over_common_denominator(centres).is_some())
 }
 
 /// Sample points `p/(q + 1)` in `[0, 1)` from pairs of positive integers.

@@ -225,6 +225,7 @@ impl<'a> System<'a> {
 mod tests {
     use super::*;
     use crate::search::polish;
+    use ccd_arith::Rat;
 
     /// [`System::crossing`] of a ray set up for this one test.
     fn crossing(
@@ -235,7 +236,6 @@ mod tests {
     ) -> Option<Crossing> {
         System::new(line, fine)?.crossing(n, side)
     }
-    use ccd_arith::Rat;
 
     /// Spheres of radii 1 and 2 (K: the ball of radius 3), the ray
     /// `(−10 + 20u, y, 0)`.

@@ -203,6 +203,23 @@ enum BallRound {
     Open { value_zero: Option<bool> },
 }
 
+/// The sign of an enclosure that excludes zero.
+fn decided(iv: Interval) -> Option<i32> {
+    iv.sign().filter(|s| *s != 0)
+}
+
+/// What [`RealRoot::sign_within`] carries from round to round besides the
+/// enclosure.
+#[derive(Default)]
+struct SignState {
+    /// Once `q(α) ≠ 0` is proven (`q` itself is formed only if the
+    /// Bernstein test runs, or for a gcd the images cannot prove).
+    nonzero: bool,
+    /// `q` re-centred next to the enclosure once an exact evaluation of
+    /// it there is costly (`LOCAL_WORTH`).
+    near: Option<Option<Local>>,
+}
+
 /// What a float Newton jump achieved.
 enum Jump {
     /// The enclosure at least halved (or the root turned out exact).
@@ -887,16 +904,10 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// between rounds, so the last round's narrowing may pass it). The
     /// narrowing done is kept; a later call starts its rounds over.
     pub fn sign_within(&mut self, model: &impl SignModel, max_bits: Option<i64>) -> Option<i32> {
-        let decided = |iv: Interval| iv.sign().filter(|s| *s != 0);
-        // Once `q(α) ≠ 0` is proven (`q` itself is formed only if the
-        // Bernstein test below runs, or for a gcd the images cannot prove).
-        let mut nonzero = false;
+        let mut state = SignState::default();
         // The rounds whose narrowing reached its width (all but those cut
         // short by `SIGN_NARROW_STEPS`): the gain doubles with these only.
         let mut reached = 0u32;
-        // `q` re-centred next to the enclosure once an exact evaluation of
-        // it there is costly (`LOCAL_WORTH`).
-        let mut near: Option<Option<Local>> = None;
         for round in 0u32.. {
             if self.sign_lo == 0 {
                 return Some(model.sign_at(&self.lo));
@@ -910,87 +921,8 @@ impl<M: SignModel + Clone> RealRoot<M> {
             // the forms below failing on it would have it.
             let wide = round == 0 && width.mul_pow2(WIDE_SIGN_LOG2) >= Rat::one();
             if !wide {
-                let m = Rat::dyadic_in(&self.lo, &self.hi);
-                let second = model.enclose_second(whole);
-                // The Taylor forms from double-word balls first: they decide
-                // only where the exact forms below would, with the same sign,
-                // and tell when those would not decide either.
-                let ball = model
-                    .ball_jet_at(&m)
-                    .and_then(|jet| self.ball_round(&m, &jet, second))
-                    .or_else(|| {
-                        model
-                            .big_jet_at(&m, SIGN_BALL_BITS)
-                            .and_then(|jet| self.ball_round(&m, &jet, second))
-                    });
-                let value_zero = match ball {
-                    Some(BallRound::Sign(s)) => return Some(s),
-                    Some(BallRound::Open {
-                        value_zero: Some(zero),
-                    }) => zero,
-                    // From round 1 on the zero test runs whatever q(m) is.
-                    Some(BallRound::Open { value_zero: None }) if round >= 1 => false,
-                    _ => {
-                        let jet = model.exact_jet_at(&m);
-                        let (qm, dqm) = jet.enclose();
-                        let (ol, oh) = self.offsets(&m);
-                        if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
-                            return Some(s);
-                        }
-                        // The same Taylor form with its linear part kept exact:
-                        // no underflow however small `q(α)` is beside `q`'s
-                        // coefficients.
-                        if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
-                            return Some(s);
-                        }
-                        qm.contains_zero()
-                    }
-                };
-                if !nonzero && (round >= 1 || value_zero) {
-                    if self.vanishes_with(model) {
-                        return Some(0);
-                    }
-                    nonzero = true;
-                }
-                // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
-                // Bernstein coefficients over `I` decides as soon as `I` is free
-                // of `q`'s roots. Its cost grows with the enclosure's bits, and
-                // the exact Taylor form decides about as early whenever the
-                // `f64` bound on `q″` is finite: so it runs at rounds 3, 6, 12, …
-                // (and whenever that bound overflowed).
-                let scheduled =
-                    round % EXACT_SIGN_ROUND == 0 && (round / EXACT_SIGN_ROUND).is_power_of_two();
-                if nonzero && (scheduled || !second.is_finite()) {
-                    // Where an exact evaluation of `q` is costly, `q`
-                    // re-centred next to `I` first, once per call
-                    // (`Local::near`; re-centring it whenever the width's bits
-                    // had doubled cost 0.2 s on two slow cases and gained on
-                    // none). Its enclosure over `I` decides about where the
-                    // test would (a sign it proves is the sign; it may decide
-                    // a round earlier, which leaves a wider enclosure than
-                    // before: a change of outputs, but not of any shipped
-                    // scene's, where it never runs), at a fraction of the cost.
-                    let q = model.exact();
-                    let mut skip = false;
-                    let cost = Cost::of(q);
-                    if cost.costly(&self.lo) {
-                        let local = near.get_or_insert_with(|| {
-                            Local::near(q, &self.lo, &self.hi, neg_log2(&width).max(0) as u64)
-                        });
-                        if let Some(l) = local {
-                            let ladder = cost.sign_ladder(&self.lo);
-                            if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
-                                return Some(s);
-                            }
-                            // A root of q in I: the test cannot decide.
-                            skip = l.changes_sign(&self.lo, &self.hi, ladder);
-                        }
-                    }
-                    if !skip {
-                        if let Some(s) = descartes_sign(q, &self.lo, &self.hi, &width) {
-                            return Some(s);
-                        }
-                    }
+                if let Some(s) = self.sign_forms(model, round, whole, &width, &mut state) {
+                    return Some(s);
                 }
             }
             // 16 bits a round while the floating-point forms may still
@@ -1008,5 +940,103 @@ impl<M: SignModel + Clone> RealRoot<M> {
             }
         }
         unreachable!("the loop returns")
+    }
+
+    /// One round of [`RealRoot::sign_within`] past the enclosure of `q`
+    /// over `I` (`whole`, `width` wide): the Taylor forms at a dyadic `m`
+    /// in `I` (ball jets, then the exact jet), the zero test once, and
+    /// Descartes' rule on schedule; the sign, or `None` for the round's
+    /// narrowing.
+    fn sign_forms(
+        &self,
+        model: &impl SignModel,
+        round: u32,
+        whole: Interval,
+        width: &Rat,
+        state: &mut SignState,
+    ) -> Option<i32> {
+        let m = Rat::dyadic_in(&self.lo, &self.hi);
+        let second = model.enclose_second(whole);
+        // The Taylor forms from double-word balls first: they decide
+        // only where the exact forms below would, with the same sign,
+        // and tell when those would not decide either.
+        let ball = model
+            .ball_jet_at(&m)
+            .and_then(|jet| self.ball_round(&m, &jet, second))
+            .or_else(|| {
+                model
+                    .big_jet_at(&m, SIGN_BALL_BITS)
+                    .and_then(|jet| self.ball_round(&m, &jet, second))
+            });
+        let value_zero = match ball {
+            Some(BallRound::Sign(s)) => return Some(s),
+            Some(BallRound::Open {
+                value_zero: Some(zero),
+            }) => zero,
+            // From round 1 on the zero test runs whatever q(m) is.
+            Some(BallRound::Open { value_zero: None }) if round >= 1 => false,
+            _ => {
+                let jet = model.exact_jet_at(&m);
+                let (qm, dqm) = jet.enclose();
+                let (ol, oh) = self.offsets(&m);
+                if let Some(s) = decided(float_taylor((&ol, &oh), qm, dqm, second)) {
+                    return Some(s);
+                }
+                // The same Taylor form with its linear part kept exact:
+                // no underflow however small `q(α)` is beside `q`'s
+                // coefficients.
+                if let Some(s) = self.exact_taylor_sign(&m, &jet, second) {
+                    return Some(s);
+                }
+                qm.contains_zero()
+            }
+        };
+        if !state.nonzero && (round >= 1 || value_zero) {
+            if self.vanishes_with(model) {
+                return Some(0);
+            }
+            state.nonzero = true;
+        }
+        // Once `q(α) ≠ 0` is proven, Descartes' rule on `q`'s exact
+        // Bernstein coefficients over `I` decides as soon as `I` is free
+        // of `q`'s roots. Its cost grows with the enclosure's bits, and
+        // the exact Taylor form decides about as early whenever the
+        // `f64` bound on `q″` is finite: so it runs at rounds 3, 6, 12, …
+        // (and whenever that bound overflowed).
+        let scheduled =
+            round.is_multiple_of(EXACT_SIGN_ROUND) && (round / EXACT_SIGN_ROUND).is_power_of_two();
+        if state.nonzero && (scheduled || !second.is_finite()) {
+            // Where an exact evaluation of `q` is costly, `q`
+            // re-centred next to `I` first, once per call
+            // (`Local::near`; re-centring it whenever the width's bits
+            // had doubled cost 0.2 s on two slow cases and gained on
+            // none). Its enclosure over `I` decides about where the
+            // test would (a sign it proves is the sign; it may decide
+            // a round earlier, which leaves a wider enclosure than
+            // before: a change of outputs, but not of any shipped
+            // scene's, where it never runs), at a fraction of the cost.
+            let q = model.exact();
+            let mut skip = false;
+            let cost = Cost::of(q);
+            if cost.costly(&self.lo) {
+                let local = state.near.get_or_insert_with(|| {
+                    Local::near(q, &self.lo, &self.hi, neg_log2(width).max(0) as u64)
+                });
+                if let Some(l) = local {
+                    let ladder = cost.sign_ladder(&self.lo);
+                    if let Some(s) = l.sign_over(&self.lo, &self.hi, ladder.clone()) {
+                        return Some(s);
+                    }
+                    // A root of q in I: the test cannot decide.
+                    skip = l.changes_sign(&self.lo, &self.hi, ladder);
+                }
+            }
+            if !skip {
+                if let Some(s) = descartes_sign(q, &self.lo, &self.hi, width) {
+                    return Some(s);
+                }
+            }
+        }
+        None
     }
 }
