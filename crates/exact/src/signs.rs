@@ -61,8 +61,9 @@ pub(crate) struct Coefficients {
     /// (indexed by [`slot`]).
     polys: [OnceLock<ZPoly>; 5],
     /// Each closed form's constant term and nominal top coefficient
-    /// ([`Coefficients::extremes`]), likewise.
-    extremes: [OnceLock<(Int, Int)>; 5],
+    /// ([`Coefficients::extreme`], indexed by [`End`]), each formed on
+    /// first need.
+    extremes: [[OnceLock<Int>; 2]; 5],
     /// Whether each closed form vanishes identically
     /// ([`Coefficients::vanishes_identically`]), decided once.
     zero: [OnceLock<bool>; 5],
@@ -197,30 +198,76 @@ impl Coefficients {
         self.zero[slot(q)].get() == Some(&true)
     }
 
-    /// The constant term `q(0)` and the nominal top coefficient (of
-    /// `t^(w·n)`) of the closed form `q` of weight `w`, computed once: `q` is
-    /// homogeneous of degree `w` in the `f_k`, so these are `q` of the
-    /// `f_k`'s coefficients of `t^0` and of `t^n`.
-    fn extremes(&self, q: Quantity) -> &(Int, Int) {
-        self.extremes[slot(q)].get_or_init(|| {
-            let at = |i: usize| {
-                let c: [Int; 5] = std::array::from_fn(|k| {
-                    self.f.coeffs[k]
-                        .coeffs()
-                        .get(i)
-                        .cloned()
-                        .unwrap_or_else(Int::zero)
-                });
-                closed_form(&c, q).expect("a closed form, not Var")
-            };
-            (at(0), at(self.f.degree()))
+    /// The `f_k`'s coefficients of `t^0` ([`End::First`]) or `t^n`
+    /// ([`End::Last`]), `k` high → low.
+    fn end_coefficients(&self, end: End) -> [Int; 5] {
+        let i = match end {
+            End::First => 0,
+            End::Last => self.f.degree(),
+        };
+        std::array::from_fn(|k| {
+            self.f.coeffs[k]
+                .coeffs()
+                .get(i)
+                .cloned()
+                .unwrap_or_else(Int::zero)
         })
+    }
+
+    /// The constant term `q(0)` ([`End::First`]) or the nominal top
+    /// coefficient (of `t^(w·n)`, [`End::Last`]) of the closed form `q` of
+    /// weight `w`, computed once: `q` is homogeneous of degree `w` in the
+    /// `f_k`, so these are `q` of the `f_k`'s coefficients of `t^0` and of
+    /// `t^n`.
+    fn extreme(&self, q: Quantity, end: End) -> &Int {
+        self.extremes[slot(q)][end as usize].get_or_init(|| {
+            closed_form(&self.end_coefficients(end), q).expect("a closed form, not Var")
+        })
+    }
+
+    /// Whether `m ≠ 0` divides [`Coefficients::extreme`] (zero included),
+    /// without forming it when it is not yet, `|m|` is short and `f` long
+    /// ([`Coefficients::long`]): `q` is a
+    /// polynomial with integer coefficients in the `f_k`'s, so its value at
+    /// their residues modulo `m` is congruent to it. For `x` of
+    /// [`SignModel::admits_root_at`] the extremes have up to `6·w·n` times
+    /// the bits of `f` (`bench-perturbed-affine-deg2-d0100`: 28,000, at
+    /// 0.85M instructions each), the residues a few words.
+    fn extreme_divisible_by(&self, q: Quantity, end: End, m: &Int) -> bool {
+        let divides = |x: &Int| x.is_zero() || x.is_divisible_by(m);
+        match self.extremes[slot(q)][end as usize].get() {
+            Some(x) => divides(x),
+            None if m.bits() <= SHORT_MODULUS_BITS && self.long() => {
+                let m = m.abs();
+                let residue = |x: Int| x.div_rem_trunc(&m).1;
+                let c = self.end_coefficients(end).map(residue);
+                residue(closed_form(&c, q).expect("a closed form, not Var")).is_zero()
+            }
+            None => divides(self.extreme(q, end)),
+        }
+    }
+
+    /// Whether some `f_k` has a coefficient of more than
+    /// [`LONG_COEFFICIENT_BITS`] bits: below, the extremes cost less than
+    /// their residues and the extreme itself, which a later step may need.
+    fn long(&self) -> bool {
+        self.f
+            .coeffs
+            .iter()
+            .any(|c| c.max_bits() > LONG_COEFFICIENT_BITS)
+    }
+
+    /// Whether [`Coefficients::extreme`] is zero: not when its residue
+    /// modulo the prime `2^61 − 1` is not, else (a zero residue) exactly.
+    fn extreme_is_zero(&self, q: Quantity, end: End) -> bool {
+        let p = Int::from((1i64 << 61) - 1);
+        self.extreme_divisible_by(q, end, &p) && self.extreme(q, end).is_zero()
     }
 
     /// `deg sr0` (`None` when `sr0 ≡ 0`), without forming `sr0` when its
     /// nominal top coefficient (of `t^(6n)`) is nonzero.
     pub(crate) fn sr0_degree(&self) -> Option<usize> {
-        if self.extremes(Quantity::Sr0).1.is_zero() {
+        if self.extreme_is_zero(Quantity::Sr0, End::Last) {
             self.polynomial(Quantity::Sr0).degree()
         } else {
             Some(6 * self.f.degree())
@@ -276,6 +323,23 @@ fn balancing(log2: impl Fn(usize) -> Option<f64>) -> (i64, i64) {
 pub(crate) fn model(f: &Rc<Coefficients>, q: Quantity) -> ClosedForm {
     ClosedForm { f: f.clone(), q }
 }
+
+/// Which extreme coefficient of a closed form ([`Coefficients::extreme`]).
+#[derive(Clone, Copy)]
+enum End {
+    /// The constant term.
+    First = 0,
+    /// The nominal top coefficient.
+    Last = 1,
+}
+
+/// Moduli of at most this many bits divide an extreme through residues
+/// ([`Coefficients::extreme_divisible_by`]).
+const SHORT_MODULUS_BITS: u64 = 128;
+
+/// Coefficients of `f` longer than this make its extremes worth avoiding
+/// ([`Coefficients::long`]).
+const LONG_COEFFICIENT_BITS: u64 = 512;
 
 /// The cache slot of a closed form.
 fn slot(q: Quantity) -> usize {
@@ -611,18 +675,17 @@ impl SignModel for ClosedForm {
     /// The rational root theorem on `q`'s constant term and nominal top
     /// coefficient (a zero one, i.e. a lower degree, tells nothing).
     fn admits_root_at(&self, x: &Rat) -> bool {
-        let (first, last) = self.f.extremes(self.q);
         if x.numer().is_zero() {
-            return first.is_zero();
+            return self.f.extreme_is_zero(self.q, End::First);
         }
-        (last.is_zero() || last.is_divisible_by(x.denom()))
-            && (first.is_zero() || first.is_divisible_by(x.numer()))
+        self.f.extreme_divisible_by(self.q, End::Last, x.denom())
+            && self.f.extreme_divisible_by(self.q, End::First, x.numer())
     }
 
     /// The nominal top coefficient when it is nonzero (then it is `q`'s
     /// leading coefficient).
     fn root_denominators(&self) -> Option<Int> {
-        let (_, last) = self.f.extremes(self.q);
+        let last = self.f.extreme(self.q, End::Last);
         (!last.is_zero()).then(|| last.abs())
     }
 
@@ -693,6 +756,37 @@ mod tests {
     }
 
     proptest! {
+        /// Divisibility of the extremes through residues (long `f`, short
+        /// moduli, before the extreme is formed) is the formed extreme's,
+        /// and so is the zero test; moduli include divisors of the
+        /// extreme, and `f` has a shared factor `2^e·3` so that some do.
+        #[test]
+        fn extremes_by_residues_are_the_exact_ones(
+            raw in proptest::collection::vec(proptest::collection::vec(-9i64..10, 3), 5),
+            e in 0u32..4,
+            m in 1i64..1_000_000,
+            q in proptest::sample::select(QS.to_vec()),
+        ) {
+            // Past LONG_COEFFICIENT_BITS, with a factor the moduli may share.
+            let scale = Int::from(3) * Int::from(2).pow(e) * Int::from(7).pow(200);
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| poly(&raw[k]).mul_int(&scale));
+            prop_assume!(!coeffs[0].is_zero());
+            let fresh = || Coefficients::new(CharPoly { coeffs: coeffs.clone() });
+            let residues = fresh();
+            prop_assert!(residues.long());
+            let (formed, exact) = (fresh(), fresh());
+            for end in [End::First, End::Last] {
+                for modulus in [Int::from(m), Int::from(2).pow(e) * Int::from(3), Int::from(-m)] {
+                    let x = exact.extreme(q, end).clone();
+                    prop_assert!(formed.extreme(q, end) == &x);
+                    let expected = x.is_zero() || x.is_divisible_by(&modulus);
+                    prop_assert_eq!(residues.extreme_divisible_by(q, end, &modulus), expected);
+                    prop_assert_eq!(formed.extreme_divisible_by(q, end, &modulus), expected);
+                }
+                prop_assert_eq!(fresh().extreme_is_zero(q, end), exact.extreme(q, end).is_zero());
+            }
+        }
+
         /// The multi-precision sign is the exact closed form's whenever it
         /// decides: on long values, on values perturbed by `2^(−k)` of their
         /// size from a quartic with a double root (where `sr0` and maybe
