@@ -37,10 +37,12 @@ use crate::centred::{centred_characteristic, Centred, Offset};
 use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
-use crate::matrices::{placed_quadric, static_quadric, through_quadrics, PlacedQuadric};
+use crate::matrices::{
+    placed_quadric, shared_denominator, static_quadric, through_quadrics, PlacedQuadric,
+};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
-use ccd_quadric::{characteristic, placed_characteristic, Mat4};
+use ccd_quadric::{characteristic, is_affine_placement, placed_characteristic, Mat4};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
 /// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
@@ -115,22 +117,33 @@ impl CharPoly {
             })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
+            // The tables shortened by the radii's shared denominator, by
+            // one more factor `c` for affine placements
+            // (`PlacedQuadric::diagonal_products`).
+            let g = shared_denominator(a, b);
+            let affine = is_affine_placement(&pa) && is_affine_placement(&pb);
+            let c = (affine && !g.is_one()).then(|| g.pow(2));
+            let both = c.as_ref();
             worth_small(sizes(&[&pa, &pb]), 8)
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
                     let [dx, dy] = [a, b].map(|body| {
-                        body.diagonal_products::<SmallInt>()
+                        body.diagonal_products::<SmallInt>(&g, affine)
                             .map(|d| SmallPoly::constant(&d))
                     });
-                    exact(placed_characteristic(&x, &dx, &y, &dy))
+                    let both = both.map(|c| SmallPoly::constant(&SmallInt::of(c)));
+                    exact(placed_characteristic(&x, &dx, &y, &dy, both.as_ref()))
                 })
                 .flatten()
                 .map_or_else(
                     || {
                         let (pa, pb) = without_row_contents(pa, pb);
-                        let [da, db] =
-                            [a, b].map(|body| body.diagonal_products::<Int>().map(ZPoly::constant));
-                        Quartic::Exact(placed_characteristic(&pa, &da, &pb, &db))
+                        let [da, db] = [a, b].map(|body| {
+                            body.diagonal_products::<Int>(&g, affine)
+                                .map(ZPoly::constant)
+                        });
+                        let both = both.map(|c| ZPoly::constant(c.clone()));
+                        Quartic::Exact(placed_characteristic(&pa, &da, &pb, &db, both.as_ref()))
                     },
                     Quartic::Small,
                 )
@@ -367,11 +380,12 @@ fn without_row_contents(mut pa: Mat4<ZPoly>, mut pb: Mat4<ZPoly>) -> (Mat4<ZPoly
 /// λ and a positive constant.
 fn inverse_characteristic(a: &PlacedQuadric, b: &PlacedQuadric) -> [ZPoly; 5] {
     let (ta, tb) = without_row_contents(transposed(a.inverse()), transposed(b.inverse()));
+    let g = shared_denominator(a, b);
     let [pa, pb] = [a, b].map(|body| {
-        let d = body.diagonal_products::<Int>();
+        let d = body.diagonal_products::<Int>(&g, false);
         std::array::from_fn(|s| ZPoly::constant(d[!s & 0xf].clone()))
     });
-    let mut f = placed_characteristic(&ta, &pa, &tb, &pb);
+    let mut f = placed_characteristic(&ta, &pa, &tb, &pb, None);
     f.reverse();
     f
 }
@@ -932,12 +946,30 @@ fn normalise_in<P: IntegerPoly>(f: [P; 5], basis: &[P]) -> Option<[P; 5]> {
     let mut c = f;
     c.reverse();
     for pi in basis {
-        // v_k and the cofactor c_k/π^v_k.
+        // v_k and the cofactor c_k/π^v_k, nearest k = 2 first on each side:
+        // once π divides neither some c_j (j < 2) nor some c_l (l > 2),
+        // both nonzero, `e = 0` is the only best choice of
+        // [`best_exponents`] (`α + 2β` is a convex combination of
+        // `α + βj >= 0` and `α + βl >= 0`, zero only at `α = β = 0`): π
+        // changes nothing and the remaining divisions, successful and
+        // long ones among them, are skipped (`bench-perturbed-affine-deg2-d0100`:
+        // `π_A² | c_0`, `π_B² | c_4`, 1.3M instructions).
         let mut split: [Option<(usize, P)>; 5] = Default::default();
-        for (part, ck) in split.iter_mut().zip(&c) {
-            if !ck.is_zero() {
-                *part = Some(ck.split(pi)?);
+        let mut undivided = [false; 2];
+        for k in [3, 1, 4, 0, 2] {
+            if undivided == [true, true] {
+                break;
             }
+            if !c[k].is_zero() {
+                let part = c[k].split(pi)?;
+                if part.0 == 0 && k != 2 {
+                    undivided[usize::from(k > 2)] = true;
+                }
+                split[k] = Some(part);
+            }
+        }
+        if undivided == [true, true] {
+            continue;
         }
         let v: [Option<usize>; 5] = std::array::from_fn(|k| split[k].as_ref().map(|(v, _)| *v));
         let degs: [usize; 5] = std::array::from_fn(|k| c[k].size().0);
@@ -1113,13 +1145,13 @@ mod tests {
                 })
             };
             let (ma, mb) = (matrix(0), matrix(1));
-            let raw = placed_characteristic(&ma, &subset_products(&d(0)), &mb, &subset_products(&d(1)));
+            let raw = placed_characteristic(&ma, &subset_products(&d(0)), &mb, &subset_products(&d(1)), None);
             let scale = (0..4).fold(Int::one(), |s, i| {
                 let row: Vec<ZPoly> = ma[i].iter().chain(&mb[i]).cloned().collect();
                 &s * &ZPoly::common_content(&row).pow(2)
             });
             let (xa, xb) = without_row_contents(ma.clone(), mb.clone());
-            let lean = placed_characteristic(&xa, &subset_products(&d(0)), &xb, &subset_products(&d(1)));
+            let lean = placed_characteristic(&xa, &subset_products(&d(0)), &xb, &subset_products(&d(1)), None);
             proptest::prop_assert_eq!(lean.map(|c| c.mul_int(&scale)), raw);
             // The same matrices as inverse placements `N` with long column
             // factors: `det(λNᵀD_AN + ...)` scales by the columns' contents

@@ -411,26 +411,51 @@ impl PlacedQuadric {
     /// cannot take out when the `nᵢ` are long primes
     /// (`bench-perturbed-affine-deg2-d0100`: 100-digit radii, `f` of 6,700
     /// bits per coefficient after normalisation, 4,030 without it).
+    ///
+    /// Each table is further divided by `c^(a(S))`, `c = g²` for `g` a
+    /// common divisor of every `dᵢ` of both bodies ([`shared_denominator`])
+    /// and `a(S) = |S ∖ {3}|` the number of axes in `S`, and multiplied by
+    /// `c` when `3 ∉ S` unless `affine`: `±Π_(i∈S) (dᵢ/g)²·Π_(i∉S) nᵢ²`,
+    /// an integer. Every Cauchy–Binet term of
+    /// [`ccd_quadric::placed_characteristic`] multiplies the tables of
+    /// `S_A = A ∖ T` and `S_B = B ∖ T`, `|S_A| + |S_B| = 4`:
+    /// * without `affine` each term is divided by `c^(4 − m)·c^(−(2 − m)) = c²`,
+    ///   `m` the number of homogeneous columns in `S_A, S_B` (`a = |S| − [3 ∈ S]`);
+    /// * with `affine` (both placements [`ccd_quadric::is_affine_placement`],
+    ///   whose terms with `m = 2` vanish, and the sum's `both = c`) by
+    ///   `c^(4 − m)` times `c` when `m = 0`: `c³` for every nonzero term.
+    ///
+    /// Either way `f` becomes `f/c²` or `f/c³`, a positive constant factor
+    /// that the normalisation's content removal takes out (the same
+    /// normalised `f`, bit for bit), and [`characteristic_at`]'s signs are
+    /// unchanged. Decimal radii share powers of ten: those of
+    /// `bench-perturbed-affine-deg2-d0100` put `2^598·3²·5^600` (1,995 bits,
+    /// about `c³`) into the content of `f`, carried through every long
+    /// product before.
     /// Over `I` (an `i128` overflow marks the entries, as everywhere).
-    pub(crate) fn diagonal_products<I: Integer>(&self) -> [I; 16] {
-        let squares = |part: fn(&Rat) -> &Int| {
-            self.radii.each_ref().map(|r| {
-                let x = I::of(part(r));
-                x.times(&x)
-            })
+    pub(crate) fn diagonal_products<I: Integer>(&self, g: &Int, affine: bool) -> [I; 16] {
+        let square = |x: &Int| {
+            let x = I::of(x);
+            x.times(&x)
         };
-        let (n, d) = (squares(Rat::numer), squares(Rat::denom));
+        let n = self.radii.each_ref().map(|r| square(r.numer()));
+        let d = self.radii.each_ref().map(|r| {
+            if g.is_one() {
+                square(r.denom())
+            } else {
+                square(&r.denom().div_exact(g))
+            }
+        });
         let body: [I; 8] = std::array::from_fn(|s| {
             (0..3).fold(I::one(), |p, i| {
                 p.times(if s >> i & 1 == 1 { &d[i] } else { &n[i] })
             })
         });
-        std::array::from_fn(|s| {
-            if s & 8 == 0 {
-                body[s].clone()
-            } else {
-                body[s & 7].negated()
-            }
+        let c = (!g.is_one() && !affine).then(|| square(g));
+        std::array::from_fn(|s| match (s & 8 == 0, &c) {
+            (true, Some(c)) => body[s].times(c),
+            (true, None) => body[s].clone(),
+            (false, _) => body[s & 7].negated(),
         })
     }
 
@@ -598,6 +623,20 @@ impl PlacedQuadric {
     }
 }
 
+/// The greatest common divisor `g` of the six radii denominators of two
+/// bodies (radii in lowest terms), by which
+/// [`PlacedQuadric::diagonal_products`] shortens both bodies' tables.
+pub(crate) fn shared_denominator(a: &PlacedQuadric, b: &PlacedQuadric) -> Int {
+    let mut g = Int::zero();
+    for r in a.radii.iter().chain(&b.radii) {
+        if g.is_one() {
+            break;
+        }
+        g = g.gcd(r.denom());
+    }
+    g
+}
+
 /// `det(λ·A(u) + B(u))` of two placed bodies at one parameter `u`, exactly,
 /// up to a positive factor and a positive rescaling of `λ` (which keep the
 /// sign of every quantity Theorem 3.10 reads: its closed forms are
@@ -619,11 +658,13 @@ pub fn characteristic_at(a: &PlacedQuadric, b: &PlacedQuadric, u: &Rat) -> [Int;
     if through_quadrics(a, b) {
         return characteristic(&a.quadric_at(u), &b.quadric_at(u));
     }
+    let g = shared_denominator(a, b);
     placed_characteristic(
         &a.placement_at(u),
-        &a.diagonal_products::<Int>(),
+        &a.diagonal_products::<Int>(&g, false),
         &b.placement_at(u),
-        &b.diagonal_products::<Int>(),
+        &b.diagonal_products::<Int>(&g, false),
+        None,
     )
 }
 
@@ -840,6 +881,58 @@ mod tests {
             proptest::prop_assert_eq!(n, norm2(&q));
         }
 
+        /// Tables shortened by a shared denominator `g` multiply every
+        /// Cauchy–Binet term by `c^(−2)` (`c = g²`), or with affine
+        /// placements, their tables without the `c` of `3 ∉ S` and
+        /// `both = c`, by `c^(−3)`: the characteristic of any two
+        /// placements is the unshortened one over `c²` (over `c³`),
+        /// coefficient by coefficient (so the normalised `f` is the same).
+        /// Radii `nᵢ/(g·kᵢ)` with a long decimal or a short shared `g`.
+        #[test]
+        fn shared_denominator_divides_f_by_a_power_of_its_square(
+            radii in proptest::collection::vec((1i64..10_000, 1i64..9), 6),
+            shared in proptest::sample::select(vec![1i64, 2, 6, 10]),
+            digits in 0u32..40,
+            entries in proptest::collection::vec(-50i64..50, 32),
+            affine in proptest::prelude::any::<bool>(),
+        ) {
+            let g0 = Int::from(shared) * Int::from(10).pow(digits);
+            let r: Vec<Rat> = radii
+                .iter()
+                .map(|&(n, k)| Rat::new(Int::from(n), &g0 * &Int::from(k)).expect("positive"))
+                .collect();
+            let still = Motion::Static { center: [0, 0, 0].map(Rat::from), orientation: q([1, 0, 0, 0]) };
+            let [a, b] = [0, 3].map(|i| {
+                let body = Body { radii: [r[i].clone(), r[i + 1].clone(), r[i + 2].clone()], motion: still.clone() };
+                placed_quadric(&body, &[Rat::zero(), Rat::one()]).expect("a static body")
+            });
+            let g = shared_denominator(&a, &b);
+            for x in r.iter() {
+                proptest::prop_assert!(x.denom().is_divisible_by(&g));
+            }
+            // Affine: last rows (0, 0, 0, w), the two w independent.
+            let m = |k: usize| -> Mat4<Int> {
+                std::array::from_fn(|i| std::array::from_fn(|j| {
+                    let v = Int::from(entries[16 * k + 4 * i + j]);
+                    if affine && i == 3 && j < 3 { Int::zero() } else { v }
+                }))
+            };
+            proptest::prop_assert_eq!(ccd_quadric::is_affine_placement(&m(0)), affine || m(0)[3][..3].iter().all(Int::is_zero));
+            let long = placed_characteristic(&m(0), &a.diagonal_products::<Int>(&Int::one(), false), &m(1), &b.diagonal_products::<Int>(&Int::one(), false), None);
+            let c = g.pow(2);
+            let short = placed_characteristic(
+                &m(0),
+                &a.diagonal_products::<Int>(&g, affine),
+                &m(1),
+                &b.diagonal_products::<Int>(&g, affine),
+                affine.then_some(&c),
+            );
+            let scale = c.pow(if affine { 3 } else { 2 });
+            for (l, s) in long.iter().zip(&short) {
+                proptest::prop_assert_eq!(l.clone(), s * &scale);
+            }
+        }
+
         /// The reduced diagonal products are those of `diag(1/r², −1)`
         /// over ℚ times `(n₀n₁n₂)²`, all integers.
         #[test]
@@ -858,10 +951,10 @@ mod tests {
             let scale = r.iter().fold(Rat::one(), |p, x| &p * &Rat::from(x.numer() * x.numer()));
             let [d0, d1, d2] = r.each_ref().map(|x| &Rat::one() / &(x * x));
             let expected = ccd_quadric::subset_products(&[d0, d1, d2, Rat::from(-1)]).map(|p| &p * &scale);
-            let exact = placed.diagonal_products::<Int>();
+            let exact = placed.diagonal_products::<Int>(&Int::one(), false);
             proptest::prop_assert_eq!(exact.clone().map(Rat::from), expected);
             // Over i128: the same integers, or marked as overflowed.
-            for (small, big) in placed.diagonal_products::<SmallInt>().iter().zip(&exact) {
+            for (small, big) in placed.diagonal_products::<SmallInt>(&Int::one(), false).iter().zip(&exact) {
                 if let Some(v) = small.to_i128() {
                     proptest::prop_assert_eq!(Int::from_i128(v), big.clone());
                 } else {

@@ -39,6 +39,14 @@ pub struct SmallPoly {
     overflow: bool,
 }
 
+/// Equal values, both exact: an overflowed polynomial (whose coefficients
+/// mean nothing) equals none, itself included, as a NaN.
+impl PartialEq for SmallPoly {
+    fn eq(&self, o: &SmallPoly) -> bool {
+        !self.overflow && !o.overflow && self.c[..self.len] == o.c[..o.len]
+    }
+}
+
 impl SmallPoly {
     /// Largest degree held.
     pub const MAX_DEGREE: usize = CAP - 1;

@@ -12,7 +12,7 @@ mod placement;
 pub use ccd_classify::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
 pub use matrix::{
-    adj3, adj4, adj4_column, characteristic, congruence, det3, det4, integral,
+    adj3, adj4, adj4_column, characteristic, congruence, det3, det4, integral, is_affine_placement,
     placed_characteristic, subset_products, Mat3, Mat4,
 };
 pub use placement::{

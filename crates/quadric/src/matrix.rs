@@ -224,6 +224,13 @@ pub fn subset_products<R: RingOps>(d: &[R; 4]) -> [R; 16] {
 /// `S`; the columns of `[M_A^(−1); −M_B^(−1)]` span the kernel of
 /// `[M_A | M_B]`, so `det(G_S) = ±det(M_A)^(−1)·det(M_B)^(−1)·P_(S^c)`.
 ///
+/// `both`, when given, multiplies the terms whose `T` holds both
+/// homogeneous columns (3 and 7): with affine placements
+/// ([`is_affine_placement`]) the terms without either vanish, so tables
+/// reduced by `c^(number of A's or B's axes in S)` and `both = c` give
+/// every term the same factor (`PlacedQuadric::diagonal_products` in
+/// `ccd-motion`).
+///
 /// The factor `det(M_A)²·det(M_B)²` is positive wherever both placements
 /// are invertible, and each `P_T` has degree at most four times that of
 /// the placements: for motions of degree 2 this is `deg_t ≤ 16`, against
@@ -239,17 +246,18 @@ pub fn subset_products<R: RingOps>(d: &[R; 4]) -> [R; 16] {
 /// let mut shifted = id.clone();
 /// shifted[0][3] = i(3);
 /// let d = [i(1), i(1), i(1), i(-1)];
-/// let f = placed_characteristic(&id, &subset_products(&d), &shifted, &subset_products(&d));
+/// let f = placed_characteristic(&id, &subset_products(&d), &shifted, &subset_products(&d), None);
 /// // Inverse placements give the quadrics directly: same quartic (det M = 1).
 /// let mut back = id.clone();
 /// back[0][3] = i(-3);
 /// assert_eq!(f, characteristic(&congruence(&id, &d), &congruence(&back, &d)));
 /// ```
-pub fn placed_characteristic<R: RingOps>(
+pub fn placed_characteristic<R: RingOps + PartialEq>(
     ma: &Mat4<R>,
     pa: &[R; 16],
     mb: &Mat4<R>,
     pb: &[R; 16],
+    both: Option<&R>,
 ) -> [R; 5] {
     // Column c of [M_A | M_B] (c < 4 from A).
     let entry = |r: usize, c: usize| if c < 4 { &ma[r][c] } else { &mb[r][c - 4] };
@@ -279,12 +287,37 @@ pub fn placed_characteristic<R: RingOps>(
     // multiplies the inner sum once): 70 products by `pb` and 16 by `pa`
     // instead of 70 products `pa·pb` and 70 by those (long products where
     // `D` has long entries).
+    // Both placements' last rows `(0, 0, 0, w)` with the same `w` (rigid
+    // and affine motions): a `T` with one homogeneous column `h` (3 or 7)
+    // has `P_T = ±w·det(rows 0–2 of T ∖ {h})` (Laplace along row 3), so
+    // `T` and `T △ {3, 7}` have the same `P_T²`: 20 of the 70 Laplace
+    // expansions and squarings are each one's partner's (`partners` holds
+    // the first square of a pair until the second takes it).
+    let shared_w = homogeneous(ma)
+        .zip(homogeneous(mb))
+        .is_some_and(|(x, y)| x == y);
+    let mut partners: Vec<(u32, R)> = Vec::new();
     for outside_a in 0u32..16 {
         let in_a = !outside_a & 0xf;
         // |T ∩ B| = 4 − |T ∩ A| = |A ∖ T|.
         let mut inner = R::zero();
+        // The terms whose `T` holds both homogeneous columns, times `both`
+        // once.
+        let mut inner_both = R::zero();
         for in_b in (0u32..16).filter(|b| b.count_ones() == outside_a.count_ones()) {
             let t = in_a | in_b << 4;
+            // A partner's square (see `shared_w`) instead of P_T's Laplace
+            // expansion and square.
+            let paired = shared_w && (t & HOMOGENEOUS).count_ones() == 1;
+            let key = t & !HOMOGENEOUS;
+            if let Some(i) = paired
+                .then(|| partners.iter().position(|(k, _)| *k == key))
+                .flatten()
+            {
+                let (_, square) = partners.swap_remove(i);
+                inner.add_product(&pb[(!in_b & 0xf) as usize], &square, false);
+                continue;
+            }
             let mut cols = [0usize; 4];
             for (slot, c) in cols.iter_mut().zip((0..8).filter(|c| t >> c & 1 == 1)) {
                 *slot = c;
@@ -302,7 +335,19 @@ pub fn placed_characteristic<R: RingOps>(
             if plucker.is_zero() {
                 continue;
             }
-            inner.add_product(&pb[(!in_b & 0xf) as usize], &plucker.squared(), false);
+            let square = plucker.squared();
+            let sum = if both.is_some() && t & HOMOGENEOUS == HOMOGENEOUS {
+                &mut inner_both
+            } else {
+                &mut inner
+            };
+            sum.add_product(&pb[(!in_b & 0xf) as usize], &square, false);
+            if paired {
+                partners.push((key, square));
+            }
+        }
+        if let Some(factor) = both.filter(|_| !inner_both.is_zero()) {
+            inner.add_product(factor, &inner_both, false);
         }
         if inner.is_zero() {
             continue;
@@ -311,6 +356,22 @@ pub fn placed_characteristic<R: RingOps>(
         coeffs[in_a.count_ones() as usize].add_product(&pa[outside_a as usize], &inner, false);
     }
     coeffs
+}
+
+/// The homogeneous columns of `[M_A | M_B]`: the last of each placement.
+const HOMOGENEOUS: u32 = 1 << 3 | 1 << 7;
+
+/// `w` when the last row of `m` is `(0, 0, 0, w)` (an affine placement).
+fn homogeneous<R: RingOps>(m: &Mat4<R>) -> Option<&R> {
+    m[3][..3].iter().all(R::is_zero).then_some(&m[3][3])
+}
+
+/// Whether the last row of `m` is `(0, 0, 0, w)`: the placements of
+/// rigid and affine motions, whose Cauchy–Binet terms in
+/// [`placed_characteristic`] vanish unless `T` holds a homogeneous
+/// column (row 3 of `[M_A | M_B]` is zero on the others).
+pub fn is_affine_placement<R: RingOps>(m: &Mat4<R>) -> bool {
+    homogeneous(m).is_some()
 }
 
 #[cfg(test)]
@@ -369,16 +430,27 @@ mod tests {
         }
 
         #[test]
-        fn placed_characteristic_is_det_squared_times_quartic(va in proptest::collection::vec(-9i64..10, 16), vb in proptest::collection::vec(-9i64..10, 16), da in proptest::collection::vec(-9i64..10, 4), db in proptest::collection::vec(-9i64..10, 4)) {
+        fn placed_characteristic_is_det_squared_times_quartic(va in proptest::collection::vec(-9i64..10, 16), vb in proptest::collection::vec(-9i64..10, 16), da in proptest::collection::vec(-9i64..10, 4), db in proptest::collection::vec(-9i64..10, 4), shape in 0u8..3) {
             // Against the quadrics through adjugates: adj(M) = det(M)·M⁻¹, so
             // det(λ·adj(M_A)ᵀD_A·adj(M_A) + adj(M_B)ᵀD_B·adj(M_B)) is
             // det(M_B)^8·det(μA + B) at μ = λ·det(M_A)²/det(M_B)², and the
-            // Plücker form is det(M_A)²det(M_B)²·det(μA + B).
-            let (ma, mb) = (mat(&va), mat(&vb));
+            // Plücker form is det(M_A)²det(M_B)²·det(μA + B). Shapes: any
+            // placements; affine ones, last rows (0, 0, 0, w), the two `w`
+            // independent; affine with one `w` (the partners' squares).
+            let (mut ma, mut mb) = (mat(&va), mat(&vb));
+            if shape > 0 {
+                for m in [&mut ma, &mut mb] {
+                    m[3][..3].iter_mut().for_each(|x| *x = Int::zero());
+                }
+                prop_assert!(is_affine_placement(&ma) && is_affine_placement(&mb));
+            }
+            if shape == 2 {
+                mb[3][3] = ma[3][3].clone();
+            }
             let (sa, sb) = (det4(&ma), det4(&mb));
             prop_assume!(!sa.is_zero() && !sb.is_zero());
             let d = |v: &[i64]| -> [Int; 4] { std::array::from_fn(|k| Int::from(v[k])) };
-            let plucker = placed_characteristic(&ma, &subset_products(&d(&da)), &mb, &subset_products(&d(&db)));
+            let plucker = placed_characteristic(&ma, &subset_products(&d(&da)), &mb, &subset_products(&d(&db)), None);
             let adjugate = characteristic(&congruence(&adj4(&ma), &d(&da)), &congruence(&adj4(&mb), &d(&db)));
             // Coefficient of λ^k: adjugate = det(M_B)^8·(sa²/sb²)^k·plucker_k/(sa²sb²),
             // i.e. adjugate_k·sa²·sb^(2k+2) = sb^8·sa^(2k)·plucker_k.
