@@ -219,10 +219,24 @@ impl Coefficients {
     /// weight `w`, computed once: `q` is homogeneous of degree `w` in the
     /// `f_k`, so these are `q` of the `f_k`'s coefficients of `t^0` and of
     /// `t^n`.
+    ///
+    /// Read off the polynomial `q` when that is formed
+    /// ([`Coefficients::polynomial`]): its coefficients of `t^0` and
+    /// `t^(w·n)` are these.
     fn extreme(&self, q: Quantity, end: End) -> &Int {
-        self.extremes[slot(q)][end as usize].get_or_init(|| {
-            closed_form(&self.end_coefficients(end), q).expect("a closed form, not Var")
+        self.extremes[slot(q)][end as usize].get_or_init(|| match self.polys[slot(q)].get() {
+            Some(p) => p.coeff(match end {
+                End::First => 0,
+                End::Last => homogeneous_degree(q) as usize * self.f.degree(),
+            }),
+            None => closed_form(&self.end_coefficients(end), q).expect("a closed form, not Var"),
         })
+    }
+
+    /// Whether [`Coefficients::extreme`] costs no closed form: formed, or
+    /// read off the formed polynomial.
+    fn extreme_at_hand(&self, q: Quantity, end: End) -> bool {
+        self.extremes[slot(q)][end as usize].get().is_some() || self.polys[slot(q)].get().is_some()
     }
 
     /// Whether `m ≠ 0` divides [`Coefficients::extreme`] (zero included),
@@ -234,17 +248,14 @@ impl Coefficients {
     /// the bits of `f` (`bench-perturbed-affine-deg2-d0100`: 28,000, at
     /// 0.85M instructions each), the residues a few words.
     fn extreme_divisible_by(&self, q: Quantity, end: End, m: &Int) -> bool {
-        let divides = |x: &Int| x.is_zero() || x.is_divisible_by(m);
-        match self.extremes[slot(q)][end as usize].get() {
-            Some(x) => divides(x),
-            None if m.bits() <= SHORT_MODULUS_BITS && self.long() => {
-                let m = m.abs();
-                let residue = |x: Int| x.div_rem_trunc(&m).1;
-                let c = self.end_coefficients(end).map(residue);
-                residue(closed_form(&c, q).expect("a closed form, not Var")).is_zero()
-            }
-            None => divides(self.extreme(q, end)),
+        if !self.extreme_at_hand(q, end) && m.bits() <= SHORT_MODULUS_BITS && self.long() {
+            let m = m.abs();
+            let residue = |x: Int| x.div_rem_trunc(&m).1;
+            let c = self.end_coefficients(end).map(residue);
+            return residue(closed_form(&c, q).expect("a closed form, not Var")).is_zero();
         }
+        let x = self.extreme(q, end);
+        x.is_zero() || x.is_divisible_by(m)
     }
 
     /// Whether some `f_k` has a coefficient of more than
@@ -760,6 +771,7 @@ mod tests {
         /// moduli, before the extreme is formed) is the formed extreme's,
         /// and so is the zero test; moduli include divisors of the
         /// extreme, and `f` has a shared factor `2^e·3` so that some do.
+        /// Extremes read off the formed polynomial are the closed form's.
         #[test]
         fn extremes_by_residues_are_the_exact_ones(
             raw in proptest::collection::vec(proptest::collection::vec(-9i64..10, 3), 5),
@@ -784,6 +796,11 @@ mod tests {
                     prop_assert_eq!(formed.extreme_divisible_by(q, end, &modulus), expected);
                 }
                 prop_assert_eq!(fresh().extreme_is_zero(q, end), exact.extreme(q, end).is_zero());
+                // Read off the formed polynomial.
+                let read = fresh();
+                read.polynomial(q);
+                prop_assert!(read.extreme_at_hand(q, end));
+                prop_assert_eq!(read.extreme(q, end), exact.extreme(q, end));
             }
         }
 
