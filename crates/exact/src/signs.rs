@@ -269,10 +269,11 @@ impl Coefficients {
     }
 
     /// Whether [`Coefficients::extreme`] is zero: not when its residue
-    /// modulo the prime `2^61 − 1` is not, else (a zero residue) exactly.
+    /// modulo the prime [`ZERO_TEST_PRIME`] is not, else (a zero residue)
+    /// exactly.
     fn extreme_is_zero(&self, q: Quantity, end: End) -> bool {
-        let p = Int::from((1i64 << 61) - 1);
-        self.extreme_divisible_by(q, end, &p) && self.extreme(q, end).is_zero()
+        self.extreme_divisible_by(q, end, &Int::from(ZERO_TEST_PRIME))
+            && self.extreme(q, end).is_zero()
     }
 
     /// `deg sr0` (`None` when `sr0 ≡ 0`), without forming `sr0` when its
@@ -347,6 +348,10 @@ enum End {
 /// Moduli of at most this many bits divide an extreme through residues
 /// ([`Coefficients::extreme_divisible_by`]).
 const SHORT_MODULUS_BITS: u64 = 128;
+
+/// The Mersenne prime `2^61 − 1`, whose residue tells a nonzero extreme
+/// ([`Coefficients::extreme_is_zero`]).
+const ZERO_TEST_PRIME: i64 = (1 << 61) - 1;
 
 /// Coefficients of `f` longer than this make its extremes worth avoiding
 /// ([`Coefficients::long`]).

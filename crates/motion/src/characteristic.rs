@@ -38,7 +38,7 @@ use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
 use crate::matrices::{
-    placed_quadric, shared_denominator, static_quadric, through_quadrics, PlacedQuadric,
+    placed_quadric, shortened_tables, static_quadric, through_quadrics, PlacedQuadric,
 };
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
@@ -117,32 +117,24 @@ impl CharPoly {
             })
         } else {
             let (pa, pb) = (a.placement(), b.placement());
-            // The tables shortened by the radii's shared denominator, by
-            // one more factor `c` for affine placements
-            // (`PlacedQuadric::diagonal_products`).
-            let g = shared_denominator(a, b);
+            // The tables shortened by the radii's shared denominator
+            // (`shortened_tables`).
             let affine = is_affine_placement(&pa) && is_affine_placement(&pb);
-            let c = (affine && !g.is_one()).then(|| g.pow(2));
-            let both = c.as_ref();
             worth_small(sizes(&[&pa, &pb]), 8)
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
-                    let [dx, dy] = [a, b].map(|body| {
-                        body.diagonal_products::<SmallInt>(&g, affine)
-                            .map(|d| SmallPoly::constant(&d))
-                    });
-                    let both = both.map(|c| SmallPoly::constant(&SmallInt::of(c)));
+                    let (tables, both) = shortened_tables::<SmallInt>(a, b, affine);
+                    let [dx, dy] = tables.map(|t| t.map(|d| SmallPoly::constant(&d)));
+                    let both = both.map(|c| SmallPoly::constant(&c));
                     exact(placed_characteristic(&x, &dx, &y, &dy, both.as_ref()))
                 })
                 .flatten()
                 .map_or_else(
                     || {
                         let (pa, pb) = without_row_contents(pa, pb);
-                        let [da, db] = [a, b].map(|body| {
-                            body.diagonal_products::<Int>(&g, affine)
-                                .map(ZPoly::constant)
-                        });
-                        let both = both.map(|c| ZPoly::constant(c.clone()));
+                        let (tables, both) = shortened_tables::<Int>(a, b, affine);
+                        let [da, db] = tables.map(|t| t.map(ZPoly::constant));
+                        let both = both.map(ZPoly::constant);
                         Quartic::Exact(placed_characteristic(&pa, &da, &pb, &db, both.as_ref()))
                     },
                     Quartic::Small,
@@ -380,11 +372,8 @@ fn without_row_contents(mut pa: Mat4<ZPoly>, mut pb: Mat4<ZPoly>) -> (Mat4<ZPoly
 /// λ and a positive constant.
 fn inverse_characteristic(a: &PlacedQuadric, b: &PlacedQuadric) -> [ZPoly; 5] {
     let (ta, tb) = without_row_contents(transposed(a.inverse()), transposed(b.inverse()));
-    let g = shared_denominator(a, b);
-    let [pa, pb] = [a, b].map(|body| {
-        let d = body.diagonal_products::<Int>(&g, false);
-        std::array::from_fn(|s| ZPoly::constant(d[!s & 0xf].clone()))
-    });
+    let (tables, _) = shortened_tables::<Int>(a, b, false);
+    let [pa, pb] = tables.map(|d| std::array::from_fn(|s| ZPoly::constant(d[!s & 0xf].clone())));
     let mut f = placed_characteristic(&ta, &pa, &tb, &pb, None);
     f.reverse();
     f
@@ -945,7 +934,7 @@ fn normalise_in<P: IntegerPoly>(f: [P; 5], basis: &[P]) -> Option<[P; 5]> {
     // Low → high for indexing by the power of λ.
     let mut c = f;
     c.reverse();
-    for pi in basis {
+    'factors: for pi in basis {
         // v_k and the cofactor c_k/π^v_k, nearest k = 2 first on each side:
         // once π divides neither some c_j (j < 2) nor some c_l (l > 2),
         // both nonzero, `e = 0` is the only best choice of
@@ -957,19 +946,16 @@ fn normalise_in<P: IntegerPoly>(f: [P; 5], basis: &[P]) -> Option<[P; 5]> {
         let mut split: [Option<(usize, P)>; 5] = Default::default();
         let mut undivided = [false; 2];
         for k in [3, 1, 4, 0, 2] {
-            if undivided == [true, true] {
-                break;
-            }
             if !c[k].is_zero() {
                 let part = c[k].split(pi)?;
                 if part.0 == 0 && k != 2 {
                     undivided[usize::from(k > 2)] = true;
+                    if undivided == [true, true] {
+                        continue 'factors;
+                    }
                 }
                 split[k] = Some(part);
             }
-        }
-        if undivided == [true, true] {
-            continue;
         }
         let v: [Option<usize>; 5] = std::array::from_fn(|k| split[k].as_ref().map(|(v, _)| *v));
         let degs: [usize; 5] = std::array::from_fn(|k| c[k].size().0);

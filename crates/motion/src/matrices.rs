@@ -626,15 +626,27 @@ impl PlacedQuadric {
 /// The greatest common divisor `g` of the six radii denominators of two
 /// bodies (radii in lowest terms), by which
 /// [`PlacedQuadric::diagonal_products`] shortens both bodies' tables.
-pub(crate) fn shared_denominator(a: &PlacedQuadric, b: &PlacedQuadric) -> Int {
-    let mut g = Int::zero();
-    for r in a.radii.iter().chain(&b.radii) {
-        if g.is_one() {
-            break;
-        }
-        g = g.gcd(r.denom());
-    }
-    g
+fn shared_denominator(a: &PlacedQuadric, b: &PlacedQuadric) -> Int {
+    content(a.radii.iter().chain(&b.radii).map(Rat::denom))
+}
+
+/// Both bodies' tables for [`ccd_quadric::placed_characteristic`],
+/// shortened by the radii's shared denominator `g`
+/// ([`PlacedQuadric::diagonal_products`]), and the `both` that goes with
+/// them: `c = g²` for `affine` placements (both
+/// [`ccd_quadric::is_affine_placement`]), else none. The sum is then `f`
+/// over `c²` (over `c³` with `affine`).
+pub(crate) fn shortened_tables<I: Integer>(
+    a: &PlacedQuadric,
+    b: &PlacedQuadric,
+    affine: bool,
+) -> ([[I; 16]; 2], Option<I>) {
+    let g = shared_denominator(a, b);
+    let both = (affine && !g.is_one()).then(|| {
+        let x = I::of(&g);
+        x.times(&x)
+    });
+    ([a, b].map(|body| body.diagonal_products(&g, affine)), both)
 }
 
 /// `det(λ·A(u) + B(u))` of two placed bodies at one parameter `u`, exactly,
@@ -658,14 +670,8 @@ pub fn characteristic_at(a: &PlacedQuadric, b: &PlacedQuadric, u: &Rat) -> [Int;
     if through_quadrics(a, b) {
         return characteristic(&a.quadric_at(u), &b.quadric_at(u));
     }
-    let g = shared_denominator(a, b);
-    placed_characteristic(
-        &a.placement_at(u),
-        &a.diagonal_products::<Int>(&g, false),
-        &b.placement_at(u),
-        &b.diagonal_products::<Int>(&g, false),
-        None,
-    )
+    let ([da, db], _) = shortened_tables::<Int>(a, b, false);
+    placed_characteristic(&a.placement_at(u), &da, &b.placement_at(u), &db, None)
 }
 
 /// Which route forms `det(λA + B)` of two placed bodies: coefficient `k`
@@ -920,13 +926,8 @@ mod tests {
             proptest::prop_assert_eq!(ccd_quadric::is_affine_placement(&m(0)), affine || m(0)[3][..3].iter().all(Int::is_zero));
             let long = placed_characteristic(&m(0), &a.diagonal_products::<Int>(&Int::one(), false), &m(1), &b.diagonal_products::<Int>(&Int::one(), false), None);
             let c = g.pow(2);
-            let short = placed_characteristic(
-                &m(0),
-                &a.diagonal_products::<Int>(&g, affine),
-                &m(1),
-                &b.diagonal_products::<Int>(&g, affine),
-                affine.then_some(&c),
-            );
+            let ([sa, sb], both) = shortened_tables::<Int>(&a, &b, affine);
+            let short = placed_characteristic(&m(0), &sa, &m(1), &sb, both.as_ref());
             let scale = c.pow(if affine { 3 } else { 2 });
             for (l, s) in long.iter().zip(&short) {
                 proptest::prop_assert_eq!(l.clone(), s * &scale);
