@@ -309,7 +309,7 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
-    let mut primitive: Option<(ZPoly, ZPoly, Int, usize)> = None;
+    let mut primitive: Option<Oriented> = None;
     // The images of the lowest degree seen, lifted both ways.
     let mut best: Option<Images> = None;
     let mut used = 0;
@@ -325,20 +325,27 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
         if d == 0 {
             return (ZPoly::one(), used);
         }
-        let (pa, pb, gamma, until) = primitive.get_or_insert_with(|| {
-            let pa = if a_primitive {
-                a.clone()
-            } else {
-                a.primitive_part()
-            };
-            let pb = b.primitive_part();
-            let gamma = pa
-                .leading()
-                .expect("nonzero")
-                .gcd(pb.leading().expect("nonzero"));
-            let until = rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
-            (pa, pb, gamma, until)
-        });
+        let until =
+            |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
+        let oriented = primitive.get_or_insert_with(|| Oriented::new(a, b, a_primitive, until));
+        // Once the monic lift is given up, the scaled one may go on
+        // reversed, from new images, when that needs fewer primes.
+        if let Some(images) = best.as_ref().filter(|i| i.monic.is_none()) {
+            if let Some(reversed) = oriented.reversal(images.count, until) {
+                *oriented = reversed;
+                best = None;
+            }
+        }
+        let Some(g) = oriented.image(g, &f) else {
+            continue;
+        };
+        let Oriented {
+            pa,
+            pb,
+            gamma,
+            until,
+            ..
+        } = &*oriented;
         let until = *until;
         // monic(g) (while rational reconstruction is tried) and γ·monic(g),
         // plain residues.
@@ -363,7 +370,7 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
             if !images.extend(monic, &scaled, &f) {
                 let cand = ZPoly::new(images.scaled.clone()).primitive_part();
                 if divides(&cand) {
-                    return (cand, used);
+                    return (oriented.finish(cand), used);
                 }
                 images.tried = Some(cand);
             }
@@ -376,13 +383,111 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
                 .and_then(|m| rational_candidate(m, &images.modulus));
             if let Some(cand) = cand.filter(|c| images.tried.as_ref() != Some(c)) {
                 if divides(&cand) {
-                    return (cand, used);
+                    return (oriented.finish(cand), used);
                 }
                 images.tried = Some(cand);
             }
         }
     }
     unreachable!("the prime loop only ends by returning")
+}
+
+/// The primitive parts `a`, `b` whose gcd is lifted, and their `γ`, as
+/// given or reversed (`t ↦ 1/t`). The scaled lift (module docs (2)) needs a
+/// modulus past `2·γ/lc(G)·‖G‖∞`: for a squarefree part, `b = a′`, so
+/// `γ = gcd(lc a, lc a′)` is `lc a` up to `deg a`, as long as `a`'s
+/// coefficients, while at the other end `gcd(a(0), a′(0))` is usually about
+/// `G(0)`. For `a(0), b(0) ≠ 0` the reversal maps `gcd(a, b)` to
+/// `gcd(rev a, rev b)` (`rev` keeps the degree of every divisor, whose
+/// constant term divides `a(0) ≠ 0`), and back; both are determined up to
+/// sign, so [`Oriented::finish`] returns the same polynomial either way.
+struct Oriented {
+    pa: ZPoly,
+    pb: ZPoly,
+    /// `gcd(lc pa, lc pb)` in this orientation.
+    gamma: Int,
+    /// [`rational_until`] for `gamma`.
+    until: usize,
+    /// Reversed, or the reversal decided against.
+    decided: bool,
+    reversed: bool,
+}
+
+impl Oriented {
+    fn new(a: &ZPoly, b: &ZPoly, a_primitive: bool, until: impl Fn(&Int) -> usize) -> Oriented {
+        let pa = if a_primitive {
+            a.clone()
+        } else {
+            a.primitive_part()
+        };
+        let pb = b.primitive_part();
+        let lead = |x: &ZPoly| x.leading().expect("nonzero").clone();
+        let gamma = lead(&pa).gcd(&lead(&pb));
+        Oriented {
+            until: until(&gamma),
+            pa,
+            pb,
+            gamma,
+            decided: false,
+            reversed: false,
+        }
+    }
+
+    /// The reversed orientation, when the scaled lift, `count` images into
+    /// this one, needs more primes than it would need from none reversed
+    /// (`γ`'s bits decide, at 62 bits a prime; `G`'s own are the same
+    /// either way). Asked once; the reversed `γ` (a gcd of the constant
+    /// terms, as long as the leading ones) is taken only where the lift
+    /// has at least two primes of `γ` left to go.
+    fn reversal(&mut self, count: usize, until: impl Fn(&Int) -> usize) -> Option<Oriented> {
+        let left = (self.gamma.bits() / 62).saturating_sub(count as u64);
+        if std::mem::replace(&mut self.decided, true) || left < 2 {
+            return None;
+        }
+        let (ta, tb) = (&self.pa.coeffs()[0], &self.pb.coeffs()[0]);
+        if ta.is_zero() || tb.is_zero() {
+            return None;
+        }
+        let gamma = ta.gcd(tb);
+        (gamma.bits() / 62 < left).then(|| Oriented {
+            pa: self.pa.reverse(),
+            pb: self.pb.reverse(),
+            until: until(&gamma),
+            gamma,
+            decided: true,
+            reversed: true,
+        })
+    }
+
+    /// The monic `gcd(a mod p, b mod p)` in this orientation, or `None` at
+    /// a prime dividing a leading coefficient here (the original's were
+    /// excluded before): reversed and made monic, its constant term is
+    /// nonzero because `p ∤ a(0)`.
+    fn image(&self, g: Vec<u64>, f: &Fp) -> Option<Vec<u64>> {
+        if !self.reversed {
+            return Some(g);
+        }
+        let divides_lead = |x: &ZPoly| x.leading().expect("nonzero").mod_u64(f.p) == 0;
+        if divides_lead(&self.pa) || divides_lead(&self.pb) {
+            return None;
+        }
+        let inv = f.inv(g[0]);
+        Some(g.iter().rev().map(|&x| f.mul(x, inv)).collect())
+    }
+
+    /// The gcd found in this orientation, in the original one: primitive
+    /// with a positive leading coefficient.
+    fn finish(&self, g: ZPoly) -> ZPoly {
+        if !self.reversed {
+            return g;
+        }
+        let g = g.reverse();
+        if g.leading().is_some_and(Int::is_negative) {
+            -g
+        } else {
+            g
+        }
+    }
 }
 
 /// The images of `gcd(a, b)` of one degree, lifted by CRT both ways of the
@@ -623,6 +728,26 @@ mod tests {
     }
 
     #[test]
+    fn a_squarefree_part_under_a_long_leading_coefficient_takes_few_primes() {
+        // p = G²·h with G of ~400-bit coefficients (G(0) < 0 < lc G) and
+        // lc h = 2^20000 + 1: γ = gcd(lc p, lc p′) has 20,000 bits, so the
+        // scaled lift needs ~330 primes, and the monic one more than its
+        // attempts allow (up to 8 images here); gcd(p(0), p′(0)) is about
+        // G(0), so reversed after those, the scaled lift takes ~9 more.
+        let c = |k: u64, v: i64| Int::one().shl(k) + Int::from(v);
+        let g = ZPoly::new(vec![-c(400, -7), c(399, 3), c(401, 5)]);
+        let big = Int::one().shl(20_000) + Int::one();
+        let p = &g.pow(2) * &long_leading(&big, &[1, -3, 2]);
+        let (got, used) = gcd_counted(&p, &p.derivative());
+        assert_eq!(got, g);
+        assert!(used <= 20, "{used} primes");
+        assert_eq!(
+            p.squarefree_part(),
+            (&g * &long_leading(&big, &[1, -3, 2])).primitive_part()
+        );
+    }
+
+    #[test]
     fn crt_recovers_signed_values() {
         let vals = [
             Int::from(-5),
@@ -835,6 +960,39 @@ mod gcd_tests {
             let p = &(&(&g.pow(k) * &a.pow(j)) * &q) * &r.pow(2);
             prop_assume!(!p.is_zero() && !hint.is_zero());
             prop_assert_eq!(p.squarefree_part_given(Some(&hint)), p.squarefree_part());
+        }
+
+        /// Long leading coefficients over short constant terms, the shape
+        /// of a squarefree part's `gcd(p, p′)`: the scaled lift goes on
+        /// reversed, and its result is the gcd, in fewer primes than `γ`'s
+        /// bits ask for as given.
+        #[test]
+        fn a_reversed_lift_is_the_gcd(
+            g in zpoly_deg(1, 3, 300),
+            p in zpoly_deg(1, 3, 40),
+            q in zpoly_deg(1, 3, 40),
+            k in 2_000u64..4_000,
+        ) {
+            let big = Int::one().shl(k) + Int::one();
+            let long = |x: &ZPoly| {
+                let mut c = x.coeffs().to_vec();
+                let top = c.len() - 1;
+                c[top] = &c[top] * &big;
+                ZPoly::new(c)
+            };
+            let (a, b) = (&g * &long(&p), &g * &long(&q));
+            prop_assume!(!a.coeffs()[0].is_zero() && !b.coeffs()[0].is_zero());
+            let (got, used) = super::gcd_counted(&a, &b);
+            // As in `contents_do_not_change_the_gcd`, independently of the
+            // lift: G divides it, it divides both, and the cofactors are
+            // coprime (one prime image of degree 0 proves that).
+            prop_assert_eq!(&got, &got.primitive_part());
+            prop_assert!(got.leading().is_some_and(|l| !l.is_negative()));
+            prop_assert!(got.div_exact(&g.primitive_part()).is_some());
+            let (qa, qb) = (a.div_exact(&got), b.div_exact(&got));
+            prop_assert!(qa.is_some() && qb.is_some());
+            prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
+            prop_assert!((used as u64) < k / 62, "{} primes", used);
         }
 
         #[test]
