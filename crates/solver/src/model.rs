@@ -261,6 +261,14 @@ pub trait SignModel {
     fn root_denominators(&self) -> Option<Int> {
         None
     }
+    /// A lower bound on the bits of [`SignModel::root_denominators`]' `L`
+    /// when `L ≠ 0`, where it costs less than `L`: enough for
+    /// [`RealRoot`](crate::RealRoot)'s early answer that an integer lies
+    /// inside `(lo·L, hi·L)`. `None` (the default, always safe): `L`
+    /// itself is read.
+    fn root_denominator_bits(&self) -> Option<u64> {
+        None
+    }
     /// `q` exactly.
     fn exact(&self) -> &ZPoly;
     /// `q` modulo the fixed word prime of [`Residues`], and whether its
@@ -303,6 +311,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     }
     fn root_denominators(&self) -> Option<Int> {
         (**self).root_denominators()
+    }
+    fn root_denominator_bits(&self) -> Option<u64> {
+        (**self).root_denominator_bits()
     }
     fn exact(&self) -> &ZPoly {
         (**self).exact()

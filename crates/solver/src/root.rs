@@ -666,15 +666,20 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// integer lies strictly between `lo·L` and `hi·L` (two products and
     /// floors, instead of the continued fraction of `Rat::simplest_in`).
     fn may_hold_rational_root(&self) -> bool {
+        // L·w ≥ 2^(bits L − 1 + bits num w − 1 − bits den w) ≥ 2: then an
+        // integer is strictly inside whatever the ends (the usual case when
+        // L is long), with no product formed; a lower bound on bits L
+        // ([`SignModel::root_denominator_bits`]) may show it without L.
+        let w = self.width();
+        let wide =
+            |l_bits: u64| (l_bits + w.numer().bits()) as i64 - w.denom().bits() as i64 - 2 >= 1;
+        if self.base.root_denominator_bits().is_some_and(wide) {
+            return true;
+        }
         let Some(l) = self.base.root_denominators() else {
             return true;
         };
-        // L·w ≥ 2^(bits L − 1 + bits num w − 1 − bits den w) ≥ 2: then an
-        // integer is strictly inside whatever the ends (the usual case when
-        // L is long), with no product formed.
-        let w = self.width();
-        let log2_lw = (l.bits() + w.numer().bits()) as i64 - w.denom().bits() as i64 - 2;
-        if log2_lw >= 1 {
+        if wide(l.bits()) {
             return true;
         }
         let l = Rat::from_int(l);
