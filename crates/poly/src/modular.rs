@@ -284,22 +284,25 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
 
 /// [`gcd`] and the number of primes whose images it took.
 fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
-    gcd_given(a, b, false)
+    let (g, used, _) = gcd_given(a, b, false);
+    (g, used)
 }
 
 /// [`gcd_counted`], told whether `a` is known to be primitive (its content,
-/// a gcd of long coefficients, is then not taken again).
-fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
+/// a gcd of long coefficients, is then not taken again), and with the
+/// cofactor `pp(a)/gcd` when the trial division formed it (a lifted gcd of
+/// positive degree).
+fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<ZPoly>) {
     let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
         let g = if a.is_zero() {
             b.primitive_part()
         } else {
             a.primitive_part()
         };
-        return (g, 0);
+        return (g, 0, None);
     };
     if da == 0 || db == 0 {
-        return (ZPoly::one(), 0);
+        return (ZPoly::one(), 0, None);
     }
     // The images are taken of `a` and `b` as given, at primes `p ∤ lc(a)·lc(b)`:
     // then `p` divides neither content, so the monic `gcd(a mod p, b mod p)`
@@ -323,7 +326,7 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
         used += 1;
         let d = g.len() - 1;
         if d == 0 {
-            return (ZPoly::one(), used);
+            return (ZPoly::one(), used, None);
         }
         let until =
             |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
@@ -355,7 +358,8 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
         };
         let gamma_m = f.enter(gamma.mod_u64(f.p));
         let scaled: Vec<u64> = g.iter().map(|&x| f.leave(f.mul(x, gamma_m))).collect();
-        let divides = |c: &ZPoly| pa.div_exact(c).is_some() && pb.div_exact(c).is_some();
+        // `pa/c` when `c` divides both.
+        let divides = |c: &ZPoly| pa.div_exact(c).filter(|_| pb.div_exact(c).is_some());
         let (images, first) = match &mut best {
             Some(images) if images.degree == d => (images, false),
             Some(images) if images.degree < d => continue,
@@ -369,8 +373,9 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
             let monic = (images.count < until).then_some(&monic[..]);
             if !images.extend(monic, &scaled, &f) {
                 let cand = ZPoly::new(images.scaled.clone()).primitive_part();
-                if divides(&cand) {
-                    return (oriented.finish(cand), used);
+                if let Some(cofactor) = divides(&cand) {
+                    let (g, cofactor) = oriented.finish(cand, cofactor);
+                    return (g, used, Some(cofactor));
                 }
                 images.tried = Some(cand);
             }
@@ -382,8 +387,9 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize) {
                 .as_ref()
                 .and_then(|m| rational_candidate(m, &images.modulus));
             if let Some(cand) = cand.filter(|c| images.tried.as_ref() != Some(c)) {
-                if divides(&cand) {
-                    return (oriented.finish(cand), used);
+                if let Some(cofactor) = divides(&cand) {
+                    let (g, cofactor) = oriented.finish(cand, cofactor);
+                    return (g, used, Some(cofactor));
                 }
                 images.tried = Some(cand);
             }
@@ -475,17 +481,19 @@ impl Oriented {
         Some(g.iter().rev().map(|&x| f.mul(x, inv)).collect())
     }
 
-    /// The gcd found in this orientation, in the original one: primitive
-    /// with a positive leading coefficient.
-    fn finish(&self, g: ZPoly) -> ZPoly {
+    /// The gcd found in this orientation and `pa`'s cofactor, in the
+    /// original one: the gcd primitive with a positive leading coefficient
+    /// (`rev pa = C·Q` gives `pa = rev C·rev Q`, every constant term
+    /// nonzero).
+    fn finish(&self, g: ZPoly, cofactor: ZPoly) -> (ZPoly, ZPoly) {
         if !self.reversed {
-            return g;
+            return (g, cofactor);
         }
-        let g = g.reverse();
+        let (g, cofactor) = (g.reverse(), cofactor.reverse());
         if g.leading().is_some_and(Int::is_negative) {
-            -g
+            (-g, -cofactor)
         } else {
-            g
+            (g, cofactor)
         }
     }
 }
@@ -559,12 +567,14 @@ impl ZPoly {
         // lemma), with a positive leading coefficient: `p`'s content is
         // taken once, for the gcd and the result.
         let p = self.primitive_part();
-        let (g, _) = gcd_given(&p, &p.derivative(), true);
+        let (g, _, cofactor) = gcd_given(&p, &p.derivative(), true);
         if g.degree() == Some(0) {
             return p;
         }
-        p.div_exact(&g)
-            .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
+        cofactor.unwrap_or_else(|| {
+            p.div_exact(&g)
+                .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
+        })
     }
     /// The squarefree part, given a factor `square` whose square is
     /// expected to divide `self` (a hint, proven here or dropped; `None`:
@@ -787,6 +797,16 @@ mod gcd_tests {
         ZPoly::from_i64s(c)
     }
 
+    /// `x` with its constant term made nonzero (the reversal's condition),
+    /// so that strategies need not reject.
+    fn nonzero_constant(x: ZPoly) -> ZPoly {
+        let mut c = x.coeffs().to_vec();
+        if c[0].is_zero() {
+            c[0] = Int::one();
+        }
+        ZPoly::new(c)
+    }
+
     #[test]
     fn zero_and_constant_cases() {
         assert_eq!(ZPoly::zero().gcd(&ZPoly::zero()), ZPoly::zero());
@@ -980,8 +1000,8 @@ mod gcd_tests {
                 c[top] = &c[top] * &big;
                 ZPoly::new(c)
             };
+            let [g, p, q] = [g, p, q].map(nonzero_constant);
             let (a, b) = (&g * &long(&p), &g * &long(&q));
-            prop_assume!(!a.coeffs()[0].is_zero() && !b.coeffs()[0].is_zero());
             let (got, used) = super::gcd_counted(&a, &b);
             // As in `contents_do_not_change_the_gcd`, independently of the
             // lift: G divides it, it divides both, and the cofactors are
@@ -993,6 +1013,27 @@ mod gcd_tests {
             prop_assert!(qa.is_some() && qb.is_some());
             prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
             prop_assert!((used as u64) < k / 62, "{} primes", used);
+        }
+
+        /// The squarefree part of `g²·h` with `lc h` long (the shape of
+        /// `graze-spin-k100-overlap`'s `sr0`), where `g·h` is proven
+        /// squarefree by one prime (no gcd): `pp(g·h)`, through the
+        /// reversed lift and the cofactor its trial division formed.
+        #[test]
+        fn a_reversed_squarefree_part(
+            g in zpoly_deg(1, 3, 300),
+            h in zpoly_deg(1, 4, 40),
+            k in 2_000u64..4_000,
+        ) {
+            let [g, h] = [g, h].map(nonzero_constant);
+            let mut c = h.coeffs().to_vec();
+            let top = c.len() - 1;
+            c[top] = &c[top] * &(Int::one().shl(k) + Int::one());
+            let h = ZPoly::new(c);
+            let expected = (&g * &h).primitive_part();
+            prop_assume!(super::squarefree_by_prime(&expected));
+            let p = &g.pow(2) * &h;
+            prop_assert_eq!(p.squarefree_part(), expected);
         }
 
         #[test]
