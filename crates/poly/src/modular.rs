@@ -797,6 +797,24 @@ mod gcd_tests {
         ZPoly::from_i64s(c)
     }
 
+    /// That `got` is `gcd(a, b)` for `a`, `b` multiples of `g`,
+    /// independently of the gcd under test: primitive with a positive
+    /// leading coefficient, `g` divides it, it divides both, and the
+    /// cofactors share no factor of positive degree (proven by one prime
+    /// image of degree 0, or not at all).
+    fn is_the_gcd(got: &ZPoly, a: &ZPoly, b: &ZPoly, g: &ZPoly) -> Result<(), TestCaseError> {
+        prop_assert_eq!(got, &got.primitive_part());
+        prop_assert!(got.leading().is_some_and(|l| !l.is_negative()));
+        prop_assert!(got.div_exact(&g.primitive_part()).is_some());
+        let (qa, qb) = (a.div_exact(got), b.div_exact(got));
+        prop_assert!(qa.is_some() && qb.is_some());
+        prop_assert_eq!(
+            qa.expect("divides").gcd(&qb.expect("divides")),
+            ZPoly::one()
+        );
+        Ok(())
+    }
+
     /// `x` with its constant term made nonzero (the reversal's condition),
     /// so that strategies need not reject.
     fn nonzero_constant(x: ZPoly) -> ZPoly {
@@ -931,31 +949,29 @@ mod gcd_tests {
             prop_assert_eq!(a.gcd(&(&a + &z(&[c]))), ZPoly::one());
         }
 
+        /// Cofactors whose leading coefficients share a long factor `L`, so
+        /// that `γ` is long: a short `G` comes from the rational lift at
+        /// once; a longer one, past the rational attempts, from the scaled
+        /// lift reversed (`γ` about `G(0)` at that end, the shape of a
+        /// squarefree part's `gcd(p, p′)`), in fewer primes than `bits(γ)/62`.
         #[test]
         fn common_factor_under_long_leading_coefficients(
             a in zpoly_deg(1, 5, 60),
             b in zpoly_deg(1, 5, 60),
-            g in zpoly_deg(1, 4, 200),
+            g in zpoly_deg(1, 4, 300),
             shift in 500u64..4000,
         ) {
-            // Cofactors whose leading coefficients share a long factor L:
-            // γ is long: a short G comes from the rational lift at once.
             let long = Int::one().shl(shift) + Int::from(3);
             let lead = |p: &ZPoly| {
-                let mut c = p.coeffs().to_vec();
+                let mut c = nonzero_constant(p.clone()).coeffs().to_vec();
                 c.push(long.clone());
                 ZPoly::new(c)
             };
-            let (ca, cb) = (lead(&a), lead(&b));
-            let got = (&ca * &g).gcd(&(&cb * &g));
-            // Independent of the gcd under test: G divides it, it divides
-            // both, and the cofactors share no factor of positive degree
-            // (proven by one prime image of degree 0, or not at all).
-            prop_assert_eq!(&got, &got.primitive_part());
-            prop_assert!(got.div_exact(&g.primitive_part()).is_some());
-            let (qa, qb) = ((&ca * &g).div_exact(&got), (&cb * &g).div_exact(&got));
-            prop_assert!(qa.is_some() && qb.is_some());
-            prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
+            let g = nonzero_constant(g);
+            let (a, b) = (&lead(&a) * &g, &lead(&b) * &g);
+            let (got, used) = super::gcd_counted(&a, &b);
+            is_the_gcd(&got, &a, &b, &g)?;
+            prop_assert!(used <= 16, "{} primes", used);
         }
 
         /// The hinted squarefree part is the plain one, whatever the hint:
@@ -980,39 +996,6 @@ mod gcd_tests {
             let p = &(&(&g.pow(k) * &a.pow(j)) * &q) * &r.pow(2);
             prop_assume!(!p.is_zero() && !hint.is_zero());
             prop_assert_eq!(p.squarefree_part_given(Some(&hint)), p.squarefree_part());
-        }
-
-        /// Long leading coefficients over short constant terms, the shape
-        /// of a squarefree part's `gcd(p, p′)`: the scaled lift goes on
-        /// reversed, and its result is the gcd, in fewer primes than `γ`'s
-        /// bits ask for as given.
-        #[test]
-        fn a_reversed_lift_is_the_gcd(
-            g in zpoly_deg(1, 3, 300),
-            p in zpoly_deg(1, 3, 40),
-            q in zpoly_deg(1, 3, 40),
-            k in 2_000u64..4_000,
-        ) {
-            let big = Int::one().shl(k) + Int::one();
-            let long = |x: &ZPoly| {
-                let mut c = x.coeffs().to_vec();
-                let top = c.len() - 1;
-                c[top] = &c[top] * &big;
-                ZPoly::new(c)
-            };
-            let [g, p, q] = [g, p, q].map(nonzero_constant);
-            let (a, b) = (&g * &long(&p), &g * &long(&q));
-            let (got, used) = super::gcd_counted(&a, &b);
-            // As in `contents_do_not_change_the_gcd`, independently of the
-            // lift: G divides it, it divides both, and the cofactors are
-            // coprime (one prime image of degree 0 proves that).
-            prop_assert_eq!(&got, &got.primitive_part());
-            prop_assert!(got.leading().is_some_and(|l| !l.is_negative()));
-            prop_assert!(got.div_exact(&g.primitive_part()).is_some());
-            let (qa, qb) = (a.div_exact(&got), b.div_exact(&got));
-            prop_assert!(qa.is_some() && qb.is_some());
-            prop_assert_eq!(qa.expect("divides").gcd(&qb.expect("divides")), ZPoly::one());
-            prop_assert!((used as u64) < k / 62, "{} primes", used);
         }
 
         /// The squarefree part of `g²·h` with `lc h` long (the shape of
