@@ -246,6 +246,15 @@ impl Coefficients {
             let x = self.extreme(q, end);
             return (!x.is_zero()).then(|| x.bits());
         }
+        // Short `f` (the usual case) without copying its end coefficients.
+        if self
+            .f
+            .coeffs
+            .iter()
+            .all(|c| c.max_bits() < INTERVAL_SIGN_MIN_BITS)
+        {
+            return None;
+        }
         let values = self.end_coefficients(end);
         if values.iter().map(Int::bits).max()? < INTERVAL_SIGN_MIN_BITS {
             return None;
@@ -807,11 +816,6 @@ mod tests {
     }
 
     proptest! {
-        /// Divisibility of the extremes through residues (long `f`, short
-        /// moduli, before the extreme is formed) is the formed extreme's,
-        /// and so is the zero test; moduli include divisors of the
-        /// extreme, and `f` has a shared factor `2^e·3` so that some do.
-        /// Extremes read off the formed polynomial are the closed form's.
         /// The bound on the extremes' bits from 256-bit intervals (long
         /// values, before the extreme is formed) holds and is tight: the
         /// exact extreme is nonzero with `bits − 1` to `bits` bits; a zero
@@ -843,6 +847,11 @@ mod tests {
             }
         }
 
+        /// Divisibility of the extremes through residues (long `f`, short
+        /// moduli, before the extreme is formed) is the formed extreme's,
+        /// and so is the zero test; moduli include divisors of the
+        /// extreme, and `f` has a shared factor `2^e·3` so that some do.
+        /// Extremes read off the formed polynomial are the closed form's.
         #[test]
         fn extremes_by_residues_are_the_exact_ones(
             raw in proptest::collection::vec(proptest::collection::vec(-9i64..10, 3), 5),

@@ -312,6 +312,7 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
+    let until = |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
     let mut primitive: Option<Oriented> = None;
     // The images of the lowest degree seen, lifted both ways.
     let mut best: Option<Images> = None;
@@ -328,8 +329,6 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
         if d == 0 {
             return (ZPoly::one(), used, None);
         }
-        let until =
-            |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
         let oriented = primitive.get_or_insert_with(|| Oriented::new(a, b, a_primitive, until));
         // Once the monic lift is given up, the scaled one may go on
         // reversed, from new images, when that needs fewer primes.
@@ -427,8 +426,7 @@ impl Oriented {
             a.primitive_part()
         };
         let pb = b.primitive_part();
-        let lead = |x: &ZPoly| x.leading().expect("nonzero").clone();
-        let gamma = lead(&pa).gcd(&lead(&pb));
+        let gamma = (pa.leading().expect("nonzero")).gcd(pb.leading().expect("nonzero"));
         Oriented {
             until: until(&gamma),
             pa,
@@ -571,10 +569,9 @@ impl ZPoly {
         if g.degree() == Some(0) {
             return p;
         }
-        cofactor.unwrap_or_else(|| {
-            p.div_exact(&g)
-                .expect("gcd(p, p') divides p in Z[t] (primitive divisor)")
-        })
+        // Of positive degree, the gcd was lifted: its trial division
+        // formed `p/g`.
+        cofactor.expect("a lifted gcd comes with its cofactor")
     }
     /// The squarefree part, given a factor `square` whose square is
     /// expected to divide `self` (a hint, proven here or dropped; `None`:
