@@ -548,7 +548,7 @@ impl ClosedForm {
                 return b.values;
             }
         }
-        let values = std::array::from_fn(|k| self.f.views[k].enclose(x));
+        let values = ScaledPoly::enclose_each(self.f.views.each_ref(), x);
         *self.f.last_box.borrow_mut() = Some(BoxValues {
             at: x,
             values,
@@ -564,9 +564,9 @@ impl ClosedForm {
         let values = self.box_values(x);
         let mut cache = self.f.last_box.borrow_mut();
         let b = cache.as_mut().expect("box_values fills the cache");
-        let derivatives = *b
-            .derivatives
-            .get_or_insert_with(|| std::array::from_fn(|k| self.f.views[k].enclose_derivatives(x)));
+        let derivatives = *b.derivatives.get_or_insert_with(|| {
+            ScaledPoly::enclose_derivatives_each(self.f.views.each_ref(), x)
+        });
         std::array::from_fn(|k| {
             let (d, dd) = derivatives[k];
             Jet2 {
@@ -721,10 +721,8 @@ impl SignModel for ClosedForm {
 
     /// The closed form over `f64` dual numbers of `(f_k, f_k′)(x)`.
     fn approx_value_and_slope(&self, x: f64) -> (f64, f64) {
-        let q = self.of(&std::array::from_fn(|k| {
-            let (v, d) = self.f.views[k].value_and_slope(x);
-            Dual { v, d }
-        }));
+        let vd = ScaledPoly::value_and_slope_each(self.f.views.each_ref(), x);
+        let q = self.of(&vd.map(|(v, d)| Dual { v, d }));
         (q.v, q.d)
     }
 

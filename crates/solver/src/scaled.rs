@@ -64,11 +64,19 @@ impl ScaledPoly {
 
     /// A certified enclosure of `{ p(x)·2^(-shift) : x ∈ X }` (interval Horner).
     pub fn enclose(&self, x: Interval) -> Interval {
-        let mut acc = Interval::point(0.0);
-        for c in self.coeffs.iter().rev() {
-            acc = acc * x + *c;
-        }
-        acc
+        let [v] = ScaledPoly::enclose_each([self], x);
+        v
+    }
+
+    /// [`ScaledPoly::enclose`] of each polynomial over one `x`, bit for
+    /// bit, their Horner steps taken in lockstep ([`lockstep`]).
+    pub fn enclose_each<const N: usize>(polys: [&ScaledPoly; N], x: Interval) -> [Interval; N] {
+        lockstep(
+            polys.map(|p| &p.coeffs[..]),
+            0,
+            Interval::point(0.0),
+            |acc, _, c| acc * x + *c,
+        )
     }
 
     /// A certified enclosure of `{ p⁽ʳ⁾(x)·2^(-shift) : x ∈ X }` for
@@ -96,26 +104,71 @@ impl ScaledPoly {
     /// bit, from one pass over the coefficients (each Horner sum keeps
     /// its own order of operations).
     pub fn enclose_derivatives(&self, x: Interval) -> (Interval, Interval) {
-        let (mut d1, mut d2) = (Interval::point(0.0), Interval::point(0.0));
-        for (i, d) in self.derived().iter().enumerate().skip(1).rev() {
-            d1 = d1 * x + d[0];
-            if i >= 2 {
-                d2 = d2 * x + d[1];
-            }
-        }
-        (d1, d2)
+        let [d] = ScaledPoly::enclose_derivatives_each([self], x);
+        d
+    }
+
+    /// [`ScaledPoly::enclose_derivatives`] of each polynomial over one
+    /// `x`, bit for bit, in lockstep ([`lockstep`]).
+    pub fn enclose_derivatives_each<const N: usize>(
+        polys: [&ScaledPoly; N],
+        x: Interval,
+    ) -> [(Interval, Interval); N] {
+        let zero = Interval::point(0.0);
+        lockstep(
+            polys.map(|p| p.derived()),
+            1,
+            (zero, zero),
+            |(d1, d2), i, d| (d1 * x + d[0], if i >= 2 { d2 * x + d[1] } else { d2 }),
+        )
     }
 
     /// `(p(x), p'(x))` approximately, scaled.
     pub fn value_and_slope(&self, x: f64) -> (f64, f64) {
-        let mut v = 0.0;
-        let mut d = 0.0;
-        for &c in self.approx.iter().rev() {
-            d = d * x + v;
-            v = v * x + c;
-        }
-        (v, d)
+        let [vd] = ScaledPoly::value_and_slope_each([self], x);
+        vd
     }
+
+    /// [`ScaledPoly::value_and_slope`] of each polynomial at one `x`, bit
+    /// for bit, in lockstep ([`lockstep`]).
+    pub fn value_and_slope_each<const N: usize>(
+        polys: [&ScaledPoly; N],
+        x: f64,
+    ) -> [(f64, f64); N] {
+        lockstep(
+            polys.map(|p| &p.approx[..]),
+            0,
+            (0.0, 0.0),
+            |(v, d), _, &c| (v * x + c, d * x + v),
+        )
+    }
+}
+
+/// Horner's rule on `N` coefficient lists (low → high) at once: the
+/// accumulators start at `start`, and from the top index down to `skip`
+/// each list with a coefficient there takes `step(acc, index, coefficient)`.
+/// Each list sees exactly the steps it would alone (so the same bits), but
+/// the steps of the `N` lists alternate: within one list each step waits
+/// for the one before (an interval step is a product, its widening, a sum
+/// and its widening, one after the other), so independent chains side by
+/// side keep the floating-point units busy where one alone would stall.
+#[inline]
+fn lockstep<const N: usize, C, A: Copy>(
+    lists: [&[C]; N],
+    skip: usize,
+    start: A,
+    step: impl Fn(A, usize, &C) -> A,
+) -> [A; N] {
+    let mut acc = [start; N];
+    let top = lists.iter().map(|l| l.len()).max().unwrap_or(0);
+    for i in (skip..top).rev() {
+        for (a, list) in acc.iter_mut().zip(lists) {
+            if let Some(c) = list.get(i) {
+                *a = step(*a, i, c);
+            }
+        }
+    }
+    acc
 }
 
 #[cfg(test)]
@@ -132,6 +185,15 @@ mod tests {
             acc = acc * x + *c * Interval::point(factor as f64);
         }
         acc
+    }
+
+    /// Interval Horner on one polynomial, step by step: what
+    /// [`ScaledPoly::enclose`] was before the lockstep.
+    fn horner(p: &ScaledPoly, x: Interval) -> Interval {
+        p.coeffs
+            .iter()
+            .rev()
+            .fold(Interval::point(0.0), |acc, c| acc * x + *c)
     }
 
     fn bits(iv: Interval) -> (u64, u64) {
@@ -156,6 +218,36 @@ mod tests {
             let (d1, d2) = sp.enclose_derivatives(x);
             prop_assert_eq!(bits(d1), bits(reference(&sp, 1, x)));
             prop_assert_eq!(bits(d2), bits(reference(&sp, 2, x)));
+        }
+
+        /// Three polynomials of different lengths (none, a constant, up to
+        /// degree 13) in lockstep give each one's own values bit for bit:
+        /// enclosures, derivatives and the plain `f64` value and slope.
+        #[test]
+        fn lockstep_is_each_alone(
+            raw in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 0..15), 3),
+            wide in 0u64..700, lo in -4.0f64..4.0, w in 0.0f64..1.0,
+        ) {
+            let polys: Vec<ScaledPoly> = raw
+                .iter()
+                .map(|r| ScaledPoly::new(&ZPoly::new(r.iter().map(|&c| Int::from(c).shl(wide) + Int::from(c)).collect())))
+                .collect();
+            let each = [&polys[0], &polys[1], &polys[2]];
+            let x = Interval::new(lo, lo + w);
+            let (values, derivatives) = (ScaledPoly::enclose_each(each, x), ScaledPoly::enclose_derivatives_each(each, x));
+            let approx = ScaledPoly::value_and_slope_each(each, lo);
+            for (k, p) in polys.iter().enumerate() {
+                prop_assert_eq!(bits(values[k]), bits(horner(p, x)));
+                prop_assert_eq!(bits(derivatives[k].0), bits(reference(p, 1, x)));
+                prop_assert_eq!(bits(derivatives[k].1), bits(reference(p, 2, x)));
+                // The value and slope pass as it was, one polynomial alone.
+                let (mut value, mut slope) = (0.0, 0.0);
+                for &c in p.approx.iter().rev() {
+                    slope = slope * lo + value;
+                    value = value * lo + c;
+                }
+                prop_assert_eq!((approx[k].0.to_bits(), approx[k].1.to_bits()), (value.to_bits(), slope.to_bits()));
+            }
         }
     }
 }
