@@ -993,3 +993,59 @@ proptest! {
         }
     }
 }
+
+/// Newton's iteration in `f64` exactly as it ran before cycles were read
+/// off: every step taken (the reference for `float_newton`).
+fn every_newton_step(lo: f64, hi: f64, f: impl Fn(f64) -> (f64, f64)) -> Option<(f64, f64)> {
+    let mut x = 0.5 * (lo + hi);
+    let mut slope = 0.0;
+    for _ in 0..12 {
+        let (v, d) = f(x);
+        if d == 0.0 || !v.is_finite() || !d.is_finite() {
+            return None;
+        }
+        slope = d;
+        let nx = (x - v / d).clamp(lo, hi);
+        if nx == x {
+            break;
+        }
+        x = nx;
+    }
+    Some((x, slope))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2048))]
+    /// The point and slope `float_newton` reads off a cycle are the ones
+    /// every step reaches, bit for bit, on polynomials with (clustered)
+    /// roots inside `[lo, hi]`, where the rounded steps cycle, and about
+    /// them, where they fail or leave; and cycles do occur.
+    #[test]
+    fn float_newton_reads_the_cycle_off_exactly(
+        roots in proptest::collection::vec(0.0f64..1.0, 1..7),
+        scale in -40i32..40,
+        (lo, hi) in (0.0f64..0.5, 0.5f64..1.0),
+    ) {
+        // p(x) = 2^scale · Π (x − r), value and slope by Horner.
+        let mut coeffs = vec![2f64.powi(scale)];
+        for r in &roots {
+            let mut next = vec![0.0; coeffs.len() + 1];
+            for (i, c) in coeffs.iter().enumerate() {
+                next[i + 1] += c;
+                next[i] -= c * r;
+            }
+            coeffs = next;
+        }
+        let f = |x: f64| {
+            let (mut v, mut d) = (0.0, 0.0);
+            for &c in coeffs.iter().rev() {
+                d = d * x + v;
+                v = v * x + c;
+            }
+            (v, d)
+        };
+        let fast = crate::root::float_newton(lo, hi, f);
+        let slow = every_newton_step(lo, hi, f);
+        prop_assert_eq!(fast.map(|(x, d)| (x.to_bits(), d.to_bits())), slow.map(|(x, d)| (x.to_bits(), d.to_bits())));
+    }
+}
