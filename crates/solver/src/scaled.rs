@@ -69,7 +69,8 @@ impl ScaledPoly {
     }
 
     /// [`ScaledPoly::enclose`] of each polynomial over one `x`, bit for
-    /// bit, their Horner steps taken in lockstep ([`lockstep`]).
+    /// bit, their Horner steps taken in lockstep (see `lockstep`: the
+    /// steps of independent polynomials alternate).
     pub fn enclose_each<const N: usize>(polys: [&ScaledPoly; N], x: Interval) -> [Interval; N] {
         lockstep(
             polys.map(|p| &p.coeffs[..]),
@@ -109,7 +110,7 @@ impl ScaledPoly {
     }
 
     /// [`ScaledPoly::enclose_derivatives`] of each polynomial over one
-    /// `x`, bit for bit, in lockstep ([`lockstep`]).
+    /// `x`, bit for bit, in lockstep (as [`ScaledPoly::enclose_each`]).
     pub fn enclose_derivatives_each<const N: usize>(
         polys: [&ScaledPoly; N],
         x: Interval,
@@ -130,7 +131,7 @@ impl ScaledPoly {
     }
 
     /// [`ScaledPoly::value_and_slope`] of each polynomial at one `x`, bit
-    /// for bit, in lockstep ([`lockstep`]).
+    /// for bit, in lockstep (as [`ScaledPoly::enclose_each`]).
     pub fn value_and_slope_each<const N: usize>(
         polys: [&ScaledPoly; N],
         x: f64,

@@ -1014,38 +1014,85 @@ fn every_newton_step(lo: f64, hi: f64, f: impl Fn(f64) -> (f64, f64)) -> Option<
     Some((x, slope))
 }
 
+/// `2^scale · Π (x − r)` in `f64`: value and slope by Horner.
+fn product_of_roots(roots: &[f64], scale: i32) -> impl Fn(f64) -> (f64, f64) {
+    let mut coeffs = vec![2f64.powi(scale)];
+    for r in roots {
+        let mut next = vec![0.0; coeffs.len() + 1];
+        for (i, c) in coeffs.iter().enumerate() {
+            next[i + 1] += c;
+            next[i] -= c * r;
+        }
+        coeffs = next;
+    }
+    move |x: f64| {
+        let (mut v, mut d) = (0.0, 0.0);
+        for &c in coeffs.iter().rev() {
+            d = d * x + v;
+            v = v * x + c;
+        }
+        (v, d)
+    }
+}
+
+/// A Newton iteration over a given value-and-slope function.
+type Newton<'a> = &'a dyn Fn(&dyn Fn(f64) -> (f64, f64)) -> Option<(f64, f64)>;
+
+/// `float_newton` and every step, as bits (with the evaluations each took).
+fn both_newtons(
+    lo: f64,
+    hi: f64,
+    f: &impl Fn(f64) -> (f64, f64),
+) -> [(Option<(u64, u64)>, usize); 2] {
+    let counted = |run: Newton| {
+        let calls = std::cell::Cell::new(0);
+        let g = |x: f64| {
+            calls.set(calls.get() + 1);
+            f(x)
+        };
+        let out = run(&g).map(|(x, d)| (x.to_bits(), d.to_bits()));
+        (out, calls.get())
+    };
+    [
+        counted(&|g| crate::root::float_newton(lo, hi, g)),
+        counted(&|g| every_newton_step(lo, hi, g)),
+    ]
+}
+
+/// A cubic with a simple root at `r` inside `[0, 1]` and a root pair
+/// elsewhere, for each `r = i/97`: the rounded steps near `r` settle into
+/// a cycle on some of them (the branch that reads the cycle off runs, with
+/// fewer evaluations), and on every one the point and slope are those of
+/// every step.
+#[test]
+fn float_newton_reads_real_cycles_off() {
+    let mut cycles = 0;
+    for i in 1..97 {
+        let r = f64::from(i) / 97.0;
+        let f = product_of_roots(&[r, 1.3, 1.7], 0);
+        let [(fast, fast_calls), (slow, slow_calls)] = both_newtons(0.0, 1.0, &f);
+        assert_eq!(fast, slow, "root {r}");
+        if fast_calls < slow_calls {
+            cycles += 1;
+        }
+    }
+    assert!(cycles > 0, "no cycle was read off");
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2048))]
-    /// The point and slope `float_newton` reads off a cycle are the ones
-    /// every step reaches, bit for bit, on polynomials with (clustered)
-    /// roots inside `[lo, hi]`, where the rounded steps cycle, and about
-    /// them, where they fail or leave; and cycles do occur.
+    /// The point and slope `float_newton` gives are the ones every step
+    /// reaches, bit for bit, on polynomials with up to six roots drawn in
+    /// `[0, 1]` (inside `[lo, hi]`, where the rounded steps may cycle, and
+    /// outside it, where they may fail or stop at an end).
     #[test]
     fn float_newton_reads_the_cycle_off_exactly(
         roots in proptest::collection::vec(0.0f64..1.0, 1..7),
         scale in -40i32..40,
         (lo, hi) in (0.0f64..0.5, 0.5f64..1.0),
     ) {
-        // p(x) = 2^scale · Π (x − r), value and slope by Horner.
-        let mut coeffs = vec![2f64.powi(scale)];
-        for r in &roots {
-            let mut next = vec![0.0; coeffs.len() + 1];
-            for (i, c) in coeffs.iter().enumerate() {
-                next[i + 1] += c;
-                next[i] -= c * r;
-            }
-            coeffs = next;
-        }
-        let f = |x: f64| {
-            let (mut v, mut d) = (0.0, 0.0);
-            for &c in coeffs.iter().rev() {
-                d = d * x + v;
-                v = v * x + c;
-            }
-            (v, d)
-        };
-        let fast = crate::root::float_newton(lo, hi, f);
-        let slow = every_newton_step(lo, hi, f);
-        prop_assert_eq!(fast.map(|(x, d)| (x.to_bits(), d.to_bits())), slow.map(|(x, d)| (x.to_bits(), d.to_bits())));
+        let f = product_of_roots(&roots, scale);
+        let [(fast, _), (slow, _)] = both_newtons(lo, hi, &f);
+        prop_assert_eq!(fast, slow);
     }
 }
