@@ -151,9 +151,14 @@ impl ExactJet {
 /// The size (coefficients times bits) from which an explicit polynomial's
 /// jet is taken in balls first ([`SignProbe`]'s [`SignModel::ball_jet_at`]):
 /// below it, one exact Horner pass is cheaper than the balls' bookkeeping
-/// (Example 5.1's `sr11`, of degree 8 with short coefficients, was 3 % slower
-/// with balls).
-pub const BALL_WORTH: u64 = 4096;
+/// (Example 5.1's `sr11` squarefree part, of degree 4 with 10-bit
+/// coefficients, size 50, is 1.8 % slower with balls). It was 4,096 until
+/// a root stopped trying balls after one failed
+/// ([`RealRoot`](crate::RealRoot)'s Newton steps): the `sr0 ≡ 0` branch's
+/// `sr11` of the grazing stability scenes (sizes 966–1,296) then gains 2–4 %
+/// from them, and where they fail (next to tight clusters) they cost one
+/// attempt per root instead of one per step.
+pub const BALL_WORTH: u64 = 512;
 
 /// `(p(x), p′(x))` by Horner's rule over balls (double-word, or any ring
 /// of enclosures), for coefficients low → high (zero for none).

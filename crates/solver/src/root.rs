@@ -295,6 +295,12 @@ pub struct RealRoot<M: SignModel + Clone = Arc<SignProbe>> {
     hi: Rat,
     /// Sign of `p(lo)`; 0 when the root is exact.
     sign_lo: i32,
+    /// Whether a double-word Newton step has failed to pin down an exact
+    /// one here ([`RealRoot::exact_newton_jump`]): the steps after it are
+    /// closer to the root, where `p(m)` cancels further, so they go
+    /// straight to the multi-precision or exact jet. (A cue for speed
+    /// only: the ball step decides only what the exact one would.)
+    balls_fail: bool,
 }
 
 impl<M: SignModel + Clone> RealRoot<M> {
@@ -304,6 +310,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             lo: at.clone(),
             hi: at,
             sign_lo: 0,
+            balls_fail: false,
         }
     }
 
@@ -314,6 +321,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             lo,
             hi,
             sign_lo,
+            balls_fail: false,
         }
     }
 
@@ -477,9 +485,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
         let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
         let second = self.base.enclose_second(self.enclosure());
-        if let Some(jet) = self.base.ball_jet_at(&m) {
-            if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
-                return done;
+        if !self.balls_fail {
+            if let Some(jet) = self.base.ball_jet_at(&m) {
+                if let Some(done) = self.ball_newton_jump(target, w, &m, second, &jet) {
+                    return done;
+                }
+                self.balls_fail = true;
             }
         }
         // The multi-precision tier: the step's grid `2^(−k)` (at most
