@@ -156,8 +156,9 @@ impl ExactJet {
 /// a root stopped trying balls after one failed
 /// ([`RealRoot`](crate::RealRoot)'s Newton steps): the `sr0 ≡ 0` branch's
 /// `sr11` of the grazing stability scenes (sizes 966–1,296) then gains 2–4 %
-/// from them, and where they fail (next to tight clusters) they cost one
-/// attempt per root instead of one per step.
+/// from them, and where they fail (next to tight clusters) a root's Newton
+/// steps pay for one failed attempt instead of one per step (its cut and
+/// sign tests still try balls each time: one evaluation, no step).
 pub const BALL_WORTH: u64 = 512;
 
 /// `(p(x), p′(x))` by Horner's rule over balls (double-word, or any ring
