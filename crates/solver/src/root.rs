@@ -240,17 +240,15 @@ pub(crate) fn float_newton(
     // Points x_0, x_1, … and the slope at each.
     let mut seen = [(0.0f64, 0.0f64); FLOAT_NEWTON_STEPS];
     let mut x = 0.5 * (lo + hi);
-    let mut slope = 0.0;
     for i in 0..FLOAT_NEWTON_STEPS {
         let (v, d) = value_and_slope(x);
         if d == 0.0 || !v.is_finite() || !d.is_finite() {
             return None;
         }
-        slope = d;
         seen[i] = (x, d);
         let nx = (x - v / d).clamp(lo, hi);
         if nx == x {
-            return Some((x, slope));
+            return Some((x, d));
         }
         // x_{i+1} = x_j: from j on, period i + 1 − j. The steps would end
         // at x_N (N = FLOAT_NEWTON_STEPS) with the slope at x_{N−1}.
@@ -263,7 +261,8 @@ pub(crate) fn float_newton(
         }
         x = nx;
     }
-    Some((x, slope))
+    // All the steps taken: x_N, with the slope at x_{N−1}.
+    Some((x, seen[FLOAT_NEWTON_STEPS - 1].1))
 }
 
 /// The most steps of [`float_newton`].
@@ -404,9 +403,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// nothing).
     fn newton_jump(&mut self, target: &Rat) -> Jump {
         let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
-        let (x, slope) = match float_newton(lo_f, hi_f, |x| self.base.approx_value_and_slope(x)) {
-            Some(xs) => xs,
-            None => return Jump::Failed,
+        let Some((x, slope)) = float_newton(lo_f, hi_f, |x| self.base.approx_value_and_slope(x))
+        else {
+            return Jump::Failed;
         };
         let resolution = self.base.enclose(Interval::point(x)).width() / slope.abs();
         let quarter = target.to_f64() * 0.25;
