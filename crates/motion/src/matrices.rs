@@ -11,8 +11,8 @@ use crate::kinds::{Bezier, Body, Motion, Quat, Vec3};
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
-    affine_inverse, affine_placement, body_diagonal, characteristic, congruence, det3, integral,
-    norm2, placed_characteristic, rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
+    affine_inverse, affine_placement, body_diagonal, characteristic, congruence, det3, norm2,
+    placed_characteristic, rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
 };
 
 /// The first root of `p` in `[0, 1]`, mapped to `t` (approximately), if any.
@@ -620,14 +620,35 @@ impl PlacedQuadric {
     /// The quadric at one parameter `u`, exactly, scaled to integers (a
     /// positive multiple of `A(u)`), from the placement's values there.
     pub fn quadric_at(&self, u: &Rat) -> Mat4<Int> {
-        let n = integral(&self.frame.map(|p| p.eval_rat(u)).inverse());
+        let n = self.frame_at(u).inverse();
         congruence(&n, &self.diagonal.each_ref().map(|e| e.coeff(0)))
     }
 
     /// The placement at one parameter `u`, exactly, scaled to integers (a
     /// nonzero multiple of `M(u)`).
     pub fn placement_at(&self, u: &Rat) -> Mat4<Int> {
-        integral(&self.frame.map(|p| p.eval_rat(u)).forward())
+        self.frame_at(u).forward()
+    }
+
+    /// The frame's polynomials at `u = a/b` times `b^N` (`N` their highest
+    /// degree): `bⁿ·p(a/b)` by homogeneous Horner (`n = deg p`, no gcd)
+    /// times `b^(N − n)`, integers. The placement and its inverse are forms
+    /// of one degree in these values (2 for a rigid frame, 1 and 3 for an
+    /// affine one), so they come out as positive multiples of their values
+    /// at `u`; at an integer `u` (the state at `t0`, `u = 0`) they are those
+    /// values.
+    fn frame_at(&self, u: &Rat) -> Frame<Int> {
+        let top = std::cell::Cell::new(0);
+        self.frame
+            .map(|p| top.set(top.get().max(p.degree().unwrap_or(0))));
+        let (top, b) = (top.get(), u.denom());
+        self.frame.map(|p| {
+            let value = p.eval_homogeneous(u);
+            match top - p.degree().unwrap_or(0) {
+                0 => value,
+                gap => value * b.pow(gap as u32),
+            }
+        })
     }
 }
 
@@ -674,12 +695,36 @@ pub(crate) fn shortened_tables<I: Integer>(
 /// The state at `t0` of a first-contact query, before `f(λ; u)` exists:
 /// `bench-perturbed-affine-deg2-d0100` (100-digit radii) spent 9M
 /// instructions there through the quadrics.
+///
+/// The products run in `i128` ([`SmallInt`]) when every number on the way
+/// fits and over [`Int`] otherwise: the same integers either way (an
+/// overflow is detected, never wrapped).
 pub fn characteristic_at(a: &PlacedQuadric, b: &PlacedQuadric, u: &Rat) -> [Int; 5] {
-    if through_quadrics(a, b) {
-        return characteristic(&a.quadric_at(u), &b.quadric_at(u));
-    }
-    let ([da, db], _) = shortened_tables::<Int>(a, b, false);
-    placed_characteristic(&a.placement_at(u), &da, &b.placement_at(u), &db, None)
+    let quadrics = through_quadrics(a, b);
+    let (ma, mb) = if quadrics {
+        (a.quadric_at(u), b.quadric_at(u))
+    } else {
+        (a.placement_at(u), b.placement_at(u))
+    };
+    let small = || -> Option<[Int; 5]> {
+        let of = |m: &Mat4<Int>| m.each_ref().map(|r| r.each_ref().map(SmallInt::of));
+        let f = if quadrics {
+            characteristic(&of(&ma), &of(&mb))
+        } else {
+            let ([da, db], _) = shortened_tables::<SmallInt>(a, b, false);
+            placed_characteristic(&of(&ma), &da, &of(&mb), &db, None)
+        };
+        let f = f.map(|c| c.to_int());
+        f.iter().all(Option::is_some).then(|| f.map(Option::unwrap))
+    };
+    small().unwrap_or_else(|| {
+        if quadrics {
+            characteristic(&ma, &mb)
+        } else {
+            let ([da, db], _) = shortened_tables::<Int>(a, b, false);
+            placed_characteristic(&ma, &da, &mb, &db, None)
+        }
+    })
 }
 
 /// Which route forms `det(λA + B)` of two placed bodies: coefficient `k`
