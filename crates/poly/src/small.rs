@@ -317,6 +317,40 @@ impl RingOps for SmallPoly {
     fn negated(&self) -> Self {
         self.zip(&SmallPoly::zero(), |x, _| x.checked_neg())
     }
+    /// `Σ_k (2·Σ_(i<j, i+j=k) x_i·x_j + x_(k/2)²)·t^k`: half the products
+    /// of [`RingOps::times`], the same value. Its sums are bounded by the
+    /// product's (`Σ |x_i·x_j| < 2^126`), so where that bound holds no
+    /// partial sum overflows; elsewhere [`RingOps::times`], checked.
+    fn squared(&self) -> Self {
+        let n = self.len;
+        let b = self.max_bits();
+        if self.overflow
+            || n == 0
+            || 2 * n - 1 > CAP
+            || 2 * b + u64::from(usize::BITS - n.leading_zeros()) > 126
+        {
+            return self.times(self);
+        }
+        let mut out = SmallPoly::zero();
+        let x = &self.c[..n];
+        // The bound makes every coefficient shorter than 2^63 (`2·b < 126`):
+        // one widening word multiplication per term.
+        let mul = |p: i128, q: i128| i128::from(p as i64) * i128::from(q as i64);
+        for (i, &xi) in x.iter().enumerate() {
+            for (slot, &xj) in out.c[2 * i + 1..].iter_mut().zip(&x[i + 1..]) {
+                *slot += mul(xi, xj);
+            }
+        }
+        for (k, slot) in out.c[..2 * n - 1].iter_mut().enumerate() {
+            *slot *= 2;
+            if k % 2 == 0 {
+                *slot += mul(x[k / 2], x[k / 2]);
+            }
+        }
+        out.len = 2 * n - 1;
+        out.trim();
+        out
+    }
     /// In place: `c_k ← c_k ± Σ_{i+j=k} x_i·y_j` on the slots themselves,
     /// without the product's 17-slot temporary. Plain machine arithmetic
     /// when the sizes bound every running sum below `2^127`
@@ -405,6 +439,28 @@ mod tests {
     use proptest::prelude::*;
 
     proptest! {
+        /// The symmetric squaring is the product by itself, overflow and
+        /// all, at every coefficient size (across the word-sized and the
+        /// overflow boundaries) and length (past half the capacity).
+        #[test]
+        fn squared_is_times(
+            raw in proptest::collection::vec((proptest::num::u128::ANY, proptest::bool::ANY), 0..11),
+            bits in 1u32..128,
+        ) {
+            // Magnitudes below 2^bits, the largest often exactly `bits` long.
+            let c: Vec<i128> = raw
+                .iter()
+                .map(|&(v, negative)| {
+                    let m = (v >> (128 - bits)) as i128;
+                    if negative { -m } else { m }
+                })
+                .collect();
+            let mut slots = [0i128; CAP];
+            slots[..c.len()].copy_from_slice(&c);
+            let p = SmallPoly::from_array(slots, c.len());
+            prop_assert_eq!(p.squared().to_zpoly(), p.times(&p).to_zpoly());
+        }
+
         /// Every operation agrees with `ZPoly` or reports an overflow, and
         /// small inputs never overflow.
         #[test]
