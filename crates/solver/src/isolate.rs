@@ -303,6 +303,8 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// image ([`Residues::proves_squarefree`](ccd_poly::Residues::proves_squarefree))
     /// in a filter-only one, on first need.
     squarefree: Option<bool>,
+    /// Nodes split so far.
+    splits: usize,
     /// Exact work done so far, in word operations ([`exact_work`]); the
     /// isolation stops once it passes `max_work` ([`RootIter::exhausted`]).
     work: u64,
@@ -387,6 +389,7 @@ impl RootIter<Arc<SignProbe>> {
             float_failures: 0,
             witnesses: Vec::new(),
             squarefree: Some(true),
+            splits: 0,
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -428,6 +431,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             float_failures: 0,
             witnesses: Vec::new(),
             squarefree: None,
+            splits: 0,
             work: 0,
             max_work: MAX_EXACT_WORK,
         }
@@ -467,6 +471,7 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// Halves `node` and stacks the halves (left on top), with the split
     /// point itself when it is a root.
     fn split_and_push(&mut self, node: Node) {
+        self.splits += 1;
         let (mut left, mut right, mid_sign) = node.split(self.float_failures < FLOAT_FAILURES);
         // The split point, as the halves have it (computed once).
         let mid = left.hi.clone();
@@ -772,6 +777,11 @@ impl<M: SignModel + Clone> RootIter<M> {
         })
     }
 
+    /// Nodes split so far (bisections, of filter or exact nodes).
+    pub fn splits(&self) -> usize {
+        self.splits
+    }
+
     /// Ends a filter-only isolation as undecided.
     fn give_up(&mut self) -> Option<RealRoot<M>> {
         self.undecided = true;
@@ -798,7 +808,13 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                 // Filter only: a coefficient it cannot sign (an exact zero,
                 // say) may be signed in the halves; split, within budget.
                 None if self.filter_only => {
-                    if node.depth >= FILTER_DEPTH || self.budget == 0 {
+                    // A cluster stalled for a streak of generations whose
+                    // halves the filter can no longer sign has reached the
+                    // filter's precision: a multiple root or roots closer
+                    // than it resolves (a touch, a near miss), which more
+                    // halving does not separate.
+                    let stalled = node.cluster.var >= 2 && node.cluster.streak >= ZOOM_STREAK;
+                    if node.depth >= FILTER_DEPTH || self.budget == 0 || stalled {
                         return self.give_up();
                     }
                     self.budget -= 1;

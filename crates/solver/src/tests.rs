@@ -47,6 +47,12 @@ pub(crate) fn dyadic_node(a: &Rat, j: u64) -> (Rat, Rat) {
 /// Bernstein coefficients, scaled by one power of two so that the longest
 /// has about 900 bits: the roots it yields, and whether it is undecided.
 fn filtered_roots(p: &ZPoly) -> (Vec<crate::RealRoot>, bool) {
+    let (found, undecided, _) = filtered_roots_counted(p);
+    (found, undecided)
+}
+
+/// [`filtered_roots`] and the number of nodes split.
+fn filtered_roots_counted(p: &ZPoly) -> (Vec<crate::RealRoot>, bool, usize) {
     let b = ccd_poly::Bernstein::from_power(p, &Rat::zero(), &Rat::one());
     let top = b.coeffs().iter().map(Int::bits).max().unwrap_or(0) as i64;
     let coeffs: Vec<Interval> = b
@@ -57,7 +63,7 @@ fn filtered_roots(p: &ZPoly) -> (Vec<crate::RealRoot>, bool) {
     let model = std::sync::Arc::new(crate::SignProbe::new(p));
     let mut iter = crate::RootIter::filtered(model, &Rat::zero(), &Rat::one(), &coeffs);
     let found = iter.by_ref().collect();
-    (found, iter.undecided())
+    (found, iter.undecided(), iter.splits())
 }
 
 fn all_roots(p: &ZPoly, lo: &Rat, hi: &Rat) -> Vec<crate::RealRoot> {
@@ -400,6 +406,30 @@ fn clusters_far_below_bisection_depth() {
     let found = all_roots(&p, &Rat::zero(), &Rat::one());
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi());
+}
+
+/// A filter-only isolation gives up on a stalled cluster as soon as the
+/// filter can no longer sign its halves: a double root at 2/5 (var 2 at
+/// every depth) ends within a few splits of the filter's precision, not
+/// at its depth limit of 64 (nor after the budget of `2n + 16` unsignable
+/// nodes): 26 splits against 50 before the rule. Simple roots `2^(−k)`
+/// apart that the filter separates (`k ≤ 24` here; from 28 on it gives
+/// up either way) are still all found after their stall.
+#[test]
+fn filtered_isolation_gives_up_on_a_stalled_cluster_at_its_precision() {
+    let double = &(&linear(&Rat::from_frac(2, 5)) * &linear(&Rat::from_frac(2, 5)))
+        * &linear(&Rat::from_frac(3, 4));
+    let (found, undecided, splits) = filtered_roots_counted(&double);
+    assert!(undecided && found.is_empty(), "{found:?}");
+    assert!(splits <= 40, "{splits} splits");
+    for k in [12, 18, 24] {
+        let a = Rat::from_frac(2, 5);
+        let b = &a + &Rat::dyadic(Int::one(), k);
+        let close = &(&linear(&a) * &linear(&b)) * &linear(&Rat::from_frac(3, 4));
+        let (found, undecided, _) = filtered_roots_counted(&close);
+        assert!(!undecided, "2^-{k} apart");
+        assert_eq!(found.len(), 3, "2^-{k} apart");
+    }
 }
 
 /// A filter-only isolation settles a near miss by the convexity test when
