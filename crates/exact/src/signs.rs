@@ -311,14 +311,20 @@ impl Coefficients {
             && self.extreme(q, end).is_zero()
     }
 
-    /// `deg sr0` (`None` when `sr0 ≡ 0`), without forming `sr0` when its
-    /// nominal top coefficient (of `t^(6n)`) is nonzero.
-    pub(crate) fn sr0_degree(&self) -> Option<usize> {
-        if self.extreme_is_zero(Quantity::Sr0, End::Last) {
-            self.polynomial(Quantity::Sr0).degree()
+    /// `deg q` (`None` when `q ≡ 0`), without forming `q` when its nominal
+    /// top coefficient (of `t^(w·n)`, `w` its degree in the `f_k`:
+    /// `t^(6n)` for `sr0`, `t^(4n)` for `sr11`) is nonzero.
+    pub(crate) fn degree(&self, q: Quantity) -> Option<usize> {
+        if self.extreme_is_zero(q, End::Last) {
+            self.polynomial(q).degree()
         } else {
-            Some(6 * self.f.degree())
+            Some(homogeneous_degree(q) as usize * self.f.degree())
         }
+    }
+
+    /// Whether `q` has been formed as a polynomial.
+    pub(crate) fn formed(&self, q: Quantity) -> bool {
+        self.polys[slot(q)].get().is_some()
     }
 
     /// The shift of view `k` (high → low) ([`view_shift`]).
