@@ -489,6 +489,7 @@ impl Oracle for Exact<'_> {
         if q == Quantity::Sr11
             && f.char_poly().degree() > 0
             && model(&f, q).filtered_sign_at(&half) != 0
+            && RootIter::filter_may_decide(&model(&f, q), &Rat::zero(), &Rat::one())
         {
             self.filtered11 = true;
             return Vanishing::Not(Some(half));

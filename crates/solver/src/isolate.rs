@@ -32,6 +32,22 @@ use std::sync::Arc;
 /// filter cannot separate roots closer than this (or a multiple root).
 const FILTER_DEPTH: u32 = 64;
 
+/// Samples of the slope in [`RootIter::filter_may_decide`].
+pub const PROSPECT_SAMPLES: usize = 16;
+
+/// A value below this fraction of the largest sampled one needs its
+/// enclosure in [`RootIter::filter_may_decide`] (any other is far from 0).
+const PROSPECT_NEAR: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// Steps (regula falsi) that close in on a critical point's bracket in
+/// [`RootIter::filter_may_decide`], at most.
+const PROSPECT_STEPS: usize = 24;
+
+/// The bracket width (a fraction of the span) at which
+/// [`RootIter::filter_may_decide`] stops: `2^(−28)`, where a double
+/// root's value is far below any `f64` enclosure's width.
+const PROSPECT_WIDTH: f64 = 1.0 / (1u64 << 28) as f64;
+
 enum Coeffs {
     Filter(FilterBernstein),
     Exact(Bernstein),
@@ -437,6 +453,79 @@ impl<M: SignModel + Clone> RootIter<M> {
         }
     }
 
+    /// Whether a filter-only isolation ([`RootIter::filtered`]) of `model`
+    /// on `[lo, hi]` can be expected to decide: a guess that only picks a
+    /// path (every answer is proven either way). `false` when the
+    /// certified enclosure ([`SignModel::float_sign_at`]) cannot sign `p`
+    /// at an end, or at a critical point of `p` — located in `f64` by
+    /// [`PROSPECT_SAMPLES`] samples of the slope and bisection where it
+    /// changes sign — where the filter's nodes could not separate a
+    /// cluster either (a double root, a touch; roots or a complex pair
+    /// closer than its precision, a near miss). Costs about
+    /// `PROSPECT_SAMPLES` `f64` evaluations, a few more per critical point,
+    /// and an enclosure only at values near 0.
+    pub fn filter_may_decide(model: &M, lo: &Rat, hi: &Rat) -> bool {
+        let (a, b) = (lo.to_f64(), hi.to_f64());
+        let at = |i: usize| a + (b - a) * i as f64 / PROSPECT_SAMPLES as f64;
+        let samples: Vec<(f64, f64)> = (0..=PROSPECT_SAMPLES)
+            .map(|i| model.approx_value_and_slope(at(i)))
+            .collect();
+        // Only values near 0 next to the samples' largest need an
+        // enclosure: any other is signed by it.
+        let scale = samples.iter().fold(0.0f64, |m, (v, _)| m.max(v.abs()));
+        let signed =
+            |x: &Rat, v: f64| v.abs() > scale * PROSPECT_NEAR || model.float_sign_at(x).is_some();
+        if !signed(lo, samples[0].0) || !signed(hi, samples[PROSPECT_SAMPLES].0) {
+            return false;
+        }
+        let slope = |x: f64| model.approx_value_and_slope(x).1;
+        let mut previous = samples[0].1;
+        for (i, &(_, next)) in samples.iter().enumerate().skip(1) {
+            if previous.is_nan() || next.is_nan() {
+                return true;
+            }
+            if (previous < 0.0) != (next < 0.0) {
+                // A critical point between: the slope's root by regula
+                // falsi (Illinois), to 2^(−28) of the span.
+                let (mut u, mut su, mut v, mut sv) = (at(i - 1), previous, at(i), next);
+                let mut side = 0;
+                for _ in 0..PROSPECT_STEPS {
+                    if v - u <= (b - a) * PROSPECT_WIDTH {
+                        break;
+                    }
+                    let m = (u * sv - v * su) / (sv - su);
+                    let m = if u < m && m < v { m } else { 0.5 * (u + v) };
+                    let sm = slope(m);
+                    if sm == 0.0 {
+                        (u, v) = (m, m);
+                        break;
+                    }
+                    if (sm < 0.0) == (su < 0.0) {
+                        (u, su) = (m, sm);
+                        if side == -1 {
+                            sv *= 0.5;
+                        }
+                        side = -1;
+                    } else {
+                        (v, sv) = (m, sm);
+                        if side == 1 {
+                            su *= 0.5;
+                        }
+                        side = 1;
+                    }
+                }
+                let m = 0.5 * (u + v);
+                let x = Rat::from_f64_exact(m);
+                let value = model.approx_value_and_slope(m).0;
+                if x.is_some_and(|x| lo < &x && &x < hi && !signed(&x, value)) {
+                    return false;
+                }
+            }
+            previous = next;
+        }
+        true
+    }
+
     /// Whether a filter-only isolation stopped at a sign it could not
     /// prove: the roots it yielded are proven, but there may be more.
     pub fn undecided(&self) -> bool {
@@ -751,6 +840,17 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// roots in the node (the ends have sign `s`), as the test's own
     /// witness would, without its jets; a near miss never yields one.
     fn float_witness(&self, node: &Node, s: i32) -> Option<(Rat, i32)> {
+        let (x, sign) = self.float_minimum(node, s)?;
+        let sign = sign?;
+        (sign != s).then_some((x, sign))
+    }
+
+    /// The minimum of `g = s·p` on the node, located to `2^(−24)` of it by
+    /// bisection on the sign of the model's `f64` guess of `g′` (no
+    /// proof), and the sign of `p` there from the model's certified
+    /// enclosure ([`SignModel::float_sign_at`]; `None` where it holds 0).
+    /// `None` when the point falls outside the node.
+    fn float_minimum(&self, node: &Node, s: i32) -> Option<(Rat, Option<i32>)> {
         let slope = |x: f64| f64::from(s) * self.base.approx_value_and_slope(x).1;
         let (mut u, mut v) = (node.lo.to_f64(), node.hi.to_f64());
         for _ in 0..24 {
@@ -765,8 +865,8 @@ impl<M: SignModel + Clone> RootIter<M> {
         if !(node.lo < x && x < node.hi) {
             return None;
         }
-        let sign = self.base.float_sign_at(&x)?;
-        (sign != s).then_some((x, sign))
+        let sign = self.base.float_sign_at(&x);
+        Some((x, sign))
     }
 
     /// [`RootIter::squarefree`], decided on first need.
@@ -808,12 +908,12 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                 // Filter only: a coefficient it cannot sign (an exact zero,
                 // say) may be signed in the halves; split, within budget.
                 None if self.filter_only => {
-                    // A cluster stalled for a streak of generations whose
-                    // halves the filter can no longer sign has reached the
-                    // filter's precision: a multiple root or roots closer
-                    // than it resolves (a touch, a near miss), which more
-                    // halving does not separate.
-                    let stalled = node.cluster.var >= 2 && node.cluster.streak >= ZOOM_STREAK;
+                    // A cluster stalled for half a streak of generations
+                    // whose halves the filter can no longer sign has
+                    // reached the filter's precision: a multiple root or
+                    // roots closer than it resolves (a touch, a near miss),
+                    // which more halving does not separate.
+                    let stalled = node.cluster.var >= 2 && node.cluster.streak >= ZOOM_STREAK / 2;
                     if node.depth >= FILTER_DEPTH || self.budget == 0 || stalled {
                         return self.give_up();
                     }
@@ -865,6 +965,26 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
             // at a multiple root the test could never end (measured: +87 %
             // on a family whose `sr0` has a square factor).
             let streak = node.cluster.streak;
+            // A filter-only isolation whose cluster first completes a
+            // streak with ends of one sign: where the certified enclosure
+            // cannot sign `p` at the cluster's minimum (a double root, or
+            // roots or a complex pair closer than the filter resolves),
+            // no filter node will separate the cluster either; give up
+            // now rather than when its halves become unsignable. Not on a
+            // function proven squarefree, whose near misses the convexity
+            // test below settles exactly.
+            if self.filter_only
+                && var >= 2
+                && streak == ZOOM_STREAK
+                && first == last
+                && first != 0
+                && self
+                    .float_minimum(&node, first)
+                    .is_some_and(|(_, sign)| sign.is_none())
+                && !self.proven_squarefree()
+            {
+                return self.give_up();
+            }
             if var >= 2 && streak >= ZOOM_STREAK {
                 let shown = |(x, sign): &(Rat, i32)| *sign != first && node.lo < *x && *x < node.hi;
                 if first == last

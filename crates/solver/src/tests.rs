@@ -408,11 +408,12 @@ fn clusters_far_below_bisection_depth() {
     assert!(found[0].lo() <= &Rat::from_frac(3, 4) && &Rat::from_frac(3, 4) <= found[0].hi());
 }
 
-/// A filter-only isolation gives up on a stalled cluster as soon as the
-/// filter can no longer sign its halves: a double root at 2/5 (var 2 at
-/// every depth) ends within a few splits of the filter's precision, not
-/// at its depth limit of 64 (nor after the budget of `2n + 16` unsignable
-/// nodes): 26 splits against 50 before the rule. Simple roots `2^(−k)`
+/// A filter-only isolation gives up on a stalled cluster where the filter
+/// cannot resolve it: a double root at 2/5 (var 2 at every depth) ends
+/// when the streak completes and the certified value at the cluster's
+/// minimum holds 0 (9 splits), not once its halves are unsignable (26
+/// splits with that rule alone), nor at the depth limit of 64 or after
+/// the budget of `2n + 16` unsignable nodes (50 splits before both). Simple roots `2^(−k)`
 /// apart that the filter separates (`k ≤ 24` here; from 28 on it gives
 /// up either way) are still all found after their stall.
 #[test]
@@ -421,7 +422,7 @@ fn filtered_isolation_gives_up_on_a_stalled_cluster_at_its_precision() {
         * &linear(&Rat::from_frac(3, 4));
     let (found, undecided, splits) = filtered_roots_counted(&double);
     assert!(undecided && found.is_empty(), "{found:?}");
-    assert!(splits <= 40, "{splits} splits");
+    assert!(splits <= 12, "{splits} splits");
     for k in [12, 18, 24] {
         let a = Rat::from_frac(2, 5);
         let b = &a + &Rat::dyadic(Int::one(), k);
@@ -430,6 +431,29 @@ fn filtered_isolation_gives_up_on_a_stalled_cluster_at_its_precision() {
         assert!(!undecided, "2^-{k} apart");
         assert_eq!(found.len(), 3, "2^-{k} apart");
     }
+}
+
+/// The filter's prospect ([`crate::RootIter::filter_may_decide`]): yes for
+/// simple roots apart and for a clear miss; no for a double root (a
+/// touch), a complex pair `2^(−100)` off the axis (a near miss closer than
+/// `f64`), simple roots `2^(−60)` apart, or a root at an end of the span.
+#[test]
+fn filter_prospect_sees_touches_near_misses_and_ends() {
+    let prospect = |p: &ZPoly| {
+        let model = std::sync::Arc::new(crate::SignProbe::new(p));
+        crate::RootIter::filter_may_decide(&model, &Rat::zero(), &Rat::one())
+    };
+    let l = |n: i64, d: i64| linear(&Rat::from_frac(n, d));
+    let other = &l(3, 4) * &l(1, 9);
+    let pair = |k: u64, hit: bool| cluster(&Rat::from_frac(2, 5), k, hit);
+    assert!(prospect(&(&l(2, 5) * &other)));
+    assert!(prospect(&(&pair(4, false) * &other)));
+    assert!(prospect(&(&pair(8, true) * &other)));
+    assert!(!prospect(&(&(&l(2, 5) * &l(2, 5)) * &other)));
+    assert!(!prospect(&(&pair(100, false) * &other)));
+    assert!(!prospect(&(&pair(60, true) * &other)));
+    assert!(!prospect(&(&l(0, 1) * &other)));
+    assert!(!prospect(&(&l(1, 1) * &other)));
 }
 
 /// A filter-only isolation settles a near miss by the convexity test when
