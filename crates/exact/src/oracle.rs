@@ -482,12 +482,15 @@ impl Oracle for Exact<'_> {
         }
         let f = Rc::clone(self.coefficients());
         let half = Rat::from_frac(1, 2);
-        // sr11(1/2) ≠ 0 by the filter (a nonconstant f; a constant one's
-        // sr11 is one closed form of integers): sr11 ≢ 0, 1/2 is the
-        // non-root Theorem 5.5 reads, and the roots may come from the
-        // filter alone, as sr0's do.
+        // sr11(1/2) ≠ 0 by the filter (a nonconstant f whose numbers are
+        // long; short ones form sr11 in i128 for less, and its explicit
+        // polynomial refines a root for half the closed form's cost):
+        // sr11 ≢ 0, 1/2 is the non-root Theorem 5.5 reads, and the roots
+        // may come from the filter alone, as sr0's do, where it can
+        // expect to decide them.
         if q == Quantity::Sr11
             && f.char_poly().degree() > 0
+            && !f.short(q)
             && model(&f, q).filtered_sign_at(&half) != 0
             && RootIter::filter_may_decide(&model(&f, q), &Rat::zero(), &Rat::one())
         {

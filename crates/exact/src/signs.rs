@@ -145,7 +145,7 @@ impl Coefficients {
 
     /// Whether `q`'s numbers are short enough to form it in `i128` first
     /// (`|q| < 2^(degree·bits + a few)`, [`homogeneous_degree`]).
-    fn short(&self, q: Quantity) -> bool {
+    pub(crate) fn short(&self, q: Quantity) -> bool {
         let bits = self.f.coeffs.iter().map(ZPoly::max_bits).max().unwrap_or(0);
         homogeneous_degree(q) * bits <= SMALL_BITS
     }
