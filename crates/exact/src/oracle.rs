@@ -707,16 +707,22 @@ mod tests {
         /// `sr11`), `sr11`'s roots from the `f64` filter (attempt 0), when
         /// it decides them all, are the exact isolation's (attempt 1): as
         /// many, in order, each refined enclosure meeting its partner's.
-        /// The filter answers on some cases and gives up on others.
+        /// The filter answers on some cases and gives up on others. The
+        /// numbers are long (the filter's domain: short ones form `sr11`
+        /// in `i128`): radii and positions carry `1 + 10^(−12)`-like
+        /// factors.
         #[test]
         fn sr11_filter_roots_are_the_exact_roots(
             radii in (1i64..9, 1i64..9),
             points in proptest::collection::vec(-40i64..40, 6),
             den in 1i64..9,
             graze in 0i64..3,
+            nudge in 1i64..1000,
         ) {
-            let rat = |n: i64| Rat::from_frac(n, den);
-            let (ra, rb) = (Rat::from(radii.0), Rat::from(if graze > 0 { radii.0 } else { radii.1 }));
+            let long = Rat::new(Int::pow10(12) + Int::from(nudge), Int::pow10(12)).expect("nonzero");
+            let rat = |n: i64| &Rat::from_frac(n, den) * &long;
+            let ra = &Rat::from(radii.0) * &long;
+            let rb = if graze > 0 { ra.clone() } else { Rat::from(radii.1) };
             let one = [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()];
             let (start, end): ([Rat; 3], [Rat; 3]) = if graze > 0 {
                 // Along x at the height ra + rb (graze 1: a touch at
