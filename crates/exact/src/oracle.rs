@@ -359,6 +359,21 @@ impl Signs for RootSigns<'_> {
     }
 }
 
+/// Whether `sr11`'s roots (where `sr0 ≡ 0`) may come from the filter
+/// alone, as `sr0`'s do: `f` is not constant (a constant `f`'s `sr11` is
+/// one closed form of integers), its numbers are long (short ones form
+/// `sr11` in `i128` for less, and the explicit polynomial refines a root
+/// for half the closed form's cost), the filter proves `sr11(1/2) ≠ 0`,
+/// and the filter can expect to decide ([`RootIter::filter_may_decide`]).
+fn sr11_filter_first(f: &Rc<Coefficients>) -> bool {
+    if f.char_poly().degree() == 0 || f.short(Quantity::Sr11) {
+        return false;
+    }
+    let m = model(f, Quantity::Sr11);
+    m.filtered_sign_at(&Rat::from_frac(1, 2)) != 0
+        && RootIter::filter_may_decide(&m, &Rat::zero(), &Rat::one())
+}
+
 /// The first of 1/2, 1/4, 3/4, 1/8, 3/8, … that is not a root of `p ≠ 0`.
 fn non_root_dyadic(p: &ZPoly) -> Rat {
     (1u64..)
@@ -481,21 +496,10 @@ impl Oracle for Exact<'_> {
             return Vanishing::Not(None);
         }
         let f = Rc::clone(self.coefficients());
-        let half = Rat::from_frac(1, 2);
-        // sr11(1/2) ≠ 0 by the filter (a nonconstant f whose numbers are
-        // long; short ones form sr11 in i128 for less, and its explicit
-        // polynomial refines a root for half the closed form's cost):
-        // sr11 ≢ 0, 1/2 is the non-root Theorem 5.5 reads, and the roots
-        // may come from the filter alone, as sr0's do, where it can
-        // expect to decide them.
-        if q == Quantity::Sr11
-            && f.char_poly().degree() > 0
-            && !f.short(q)
-            && model(&f, q).filtered_sign_at(&half) != 0
-            && RootIter::filter_may_decide(&model(&f, q), &Rat::zero(), &Rat::one())
-        {
+        if q == Quantity::Sr11 && sr11_filter_first(&f) {
+            // sr11 ≢ 0, and 1/2 is the non-root Theorem 5.5 reads.
             self.filtered11 = true;
-            return Vanishing::Not(Some(half));
+            return Vanishing::Not(Some(Rat::from_frac(1, 2)));
         }
         let zero = f.vanishes_identically(q);
         // sr0 proven zero by a fixed repeated factor is not formed.

@@ -82,6 +82,19 @@ impl<P: RingOps> Frame<P> {
         }
     }
 
+    /// Every entry.
+    fn entries(&self) -> impl Iterator<Item = &P> {
+        let (m, v, n, w) = match self {
+            Frame::Rigid { m, n, center, w } => (m, center, Some(n), w),
+            Frame::Affine { l, d, w } => (l, d, None, w),
+        };
+        m.iter()
+            .flatten()
+            .chain(v)
+            .chain(n)
+            .chain(std::iter::once(w))
+    }
+
     /// Every entry mapped by `f`.
     fn map<Q>(&self, f: impl Fn(&P) -> Q) -> Frame<Q> {
         let m3 = |m: &Mat3<P>| m.each_ref().map(|row| row.each_ref().map(&f));
@@ -638,10 +651,13 @@ impl PlacedQuadric {
     /// at `u`; at an integer `u` (the state at `t0`, `u = 0`) they are those
     /// values.
     fn frame_at(&self, u: &Rat) -> Frame<Int> {
-        let top = std::cell::Cell::new(0);
-        self.frame
-            .map(|p| top.set(top.get().max(p.degree().unwrap_or(0))));
-        let (top, b) = (top.get(), u.denom());
+        let top = self
+            .frame
+            .entries()
+            .filter_map(ZPoly::degree)
+            .max()
+            .unwrap_or(0);
+        let b = u.denom();
         self.frame.map(|p| {
             let value = p.eval_homogeneous(u);
             match top - p.degree().unwrap_or(0) {
@@ -706,25 +722,29 @@ pub fn characteristic_at(a: &PlacedQuadric, b: &PlacedQuadric, u: &Rat) -> [Int;
     } else {
         (a.placement_at(u), b.placement_at(u))
     };
-    let small = || -> Option<[Int; 5]> {
-        let of = |m: &Mat4<Int>| m.each_ref().map(|r| r.each_ref().map(SmallInt::of));
-        let f = if quadrics {
-            characteristic(&of(&ma), &of(&mb))
-        } else {
-            let ([da, db], _) = shortened_tables::<SmallInt>(a, b, false);
-            placed_characteristic(&of(&ma), &da, &of(&mb), &db, None)
-        };
-        let f = f.map(|c| c.to_int());
-        f.iter().all(Option::is_some).then(|| f.map(Option::unwrap))
-    };
-    small().unwrap_or_else(|| {
-        if quadrics {
-            characteristic(&ma, &mb)
-        } else {
-            let ([da, db], _) = shortened_tables::<Int>(a, b, false);
-            placed_characteristic(&ma, &da, &mb, &db, None)
-        }
-    })
+    let of = |m: &Mat4<Int>| m.each_ref().map(|r| r.each_ref().map(SmallInt::of));
+    let small = quartic_of(a, b, &of(&ma), &of(&mb), quadrics).map(|c| c.to_int());
+    if small.iter().all(Option::is_some) {
+        return small.map(Option::unwrap);
+    }
+    quartic_of(a, b, &ma, &mb, quadrics)
+}
+
+/// [`characteristic_at`]'s quartic over `I` from the matrices it formed at
+/// `u`: the quadrics' ([`characteristic`]) or the placements'
+/// ([`placed_characteristic`]).
+fn quartic_of<I: Integer>(
+    a: &PlacedQuadric,
+    b: &PlacedQuadric,
+    ma: &Mat4<I>,
+    mb: &Mat4<I>,
+    quadrics: bool,
+) -> [I; 5] {
+    if quadrics {
+        return characteristic(ma, mb);
+    }
+    let ([da, db], _) = shortened_tables::<I>(a, b, false);
+    placed_characteristic(ma, &da, mb, &db, None)
 }
 
 /// Which route forms `det(λA + B)` of two placed bodies: coefficient `k`

@@ -32,8 +32,46 @@ use std::sync::Arc;
 /// filter cannot separate roots closer than this (or a multiple root).
 const FILTER_DEPTH: u32 = 64;
 
+/// The root of `slope` between `u` and `v`, where its values `su`, `sv`
+/// have opposite signs, by regula falsi (Illinois: the end kept twice in a
+/// row has its value halved), at most [`PROSPECT_STEPS`] steps or until the
+/// bracket is `width` wide: its midpoint then.
+fn slope_root(
+    slope: impl Fn(f64) -> f64,
+    (mut u, mut su): (f64, f64),
+    (mut v, mut sv): (f64, f64),
+    width: f64,
+) -> f64 {
+    let mut side = 0;
+    for _ in 0..PROSPECT_STEPS {
+        if v - u <= width {
+            break;
+        }
+        let m = (u * sv - v * su) / (sv - su);
+        let m = if u < m && m < v { m } else { 0.5 * (u + v) };
+        let sm = slope(m);
+        if sm == 0.0 {
+            return m;
+        }
+        if (sm < 0.0) == (su < 0.0) {
+            (u, su) = (m, sm);
+            if side == -1 {
+                sv *= 0.5;
+            }
+            side = -1;
+        } else {
+            (v, sv) = (m, sm);
+            if side == 1 {
+                su *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    0.5 * (u + v)
+}
+
 /// Samples of the slope in [`RootIter::filter_may_decide`].
-pub const PROSPECT_SAMPLES: usize = 16;
+const PROSPECT_SAMPLES: usize = 16;
 
 /// A value below this fraction of the largest sampled one needs its
 /// enclosure in [`RootIter::filter_may_decide`] (any other is far from 0).
@@ -457,13 +495,13 @@ impl<M: SignModel + Clone> RootIter<M> {
     /// on `[lo, hi]` can be expected to decide: a guess that only picks a
     /// path (every answer is proven either way). `false` when the
     /// certified enclosure ([`SignModel::float_sign_at`]) cannot sign `p`
-    /// at an end, or at a critical point of `p` — located in `f64` by
-    /// [`PROSPECT_SAMPLES`] samples of the slope and bisection where it
-    /// changes sign — where the filter's nodes could not separate a
+    /// at an end, or at a critical point of `p` — located in `f64` by 16
+    /// samples of the slope and regula falsi where it changes sign — where
+    /// the filter's nodes could not separate a
     /// cluster either (a double root, a touch; roots or a complex pair
-    /// closer than its precision, a near miss). Costs about
-    /// `PROSPECT_SAMPLES` `f64` evaluations, a few more per critical point,
-    /// and an enclosure only at values near 0.
+    /// closer than its precision, a near miss). Costs about 16 `f64`
+    /// evaluations, a few more per critical point, and an enclosure only at
+    /// values near 0.
     pub fn filter_may_decide(model: &M, lo: &Rat, hi: &Rat) -> bool {
         let (a, b) = (lo.to_f64(), hi.to_f64());
         let at = |i: usize| a + (b - a) * i as f64 / PROSPECT_SAMPLES as f64;
@@ -485,36 +523,13 @@ impl<M: SignModel + Clone> RootIter<M> {
                 return true;
             }
             if (previous < 0.0) != (next < 0.0) {
-                // A critical point between: the slope's root by regula
-                // falsi (Illinois), to 2^(−28) of the span.
-                let (mut u, mut su, mut v, mut sv) = (at(i - 1), previous, at(i), next);
-                let mut side = 0;
-                for _ in 0..PROSPECT_STEPS {
-                    if v - u <= (b - a) * PROSPECT_WIDTH {
-                        break;
-                    }
-                    let m = (u * sv - v * su) / (sv - su);
-                    let m = if u < m && m < v { m } else { 0.5 * (u + v) };
-                    let sm = slope(m);
-                    if sm == 0.0 {
-                        (u, v) = (m, m);
-                        break;
-                    }
-                    if (sm < 0.0) == (su < 0.0) {
-                        (u, su) = (m, sm);
-                        if side == -1 {
-                            sv *= 0.5;
-                        }
-                        side = -1;
-                    } else {
-                        (v, sv) = (m, sm);
-                        if side == 1 {
-                            su *= 0.5;
-                        }
-                        side = 1;
-                    }
-                }
-                let m = 0.5 * (u + v);
+                // A critical point between.
+                let m = slope_root(
+                    slope,
+                    (at(i - 1), previous),
+                    (at(i), next),
+                    (b - a) * PROSPECT_WIDTH,
+                );
                 let x = Rat::from_f64_exact(m);
                 let value = model.approx_value_and_slope(m).0;
                 if x.is_some_and(|x| lo < &x && &x < hi && !signed(&x, value)) {
