@@ -644,8 +644,57 @@ fn times_power<P: RingOps>(c: &P, pi: &P, e: u32) -> P {
 
 /// The exponents `α + β·k` (k = 0..4, low → high) minimising `α + 2β`
 /// subject to `α + β·k >= −v_k`, ties broken by the smallest largest
-/// resulting size (`sizes[k] + e_k·size_pi`: degrees, or bits for a prime).
+/// resulting size (`sizes[k] + e_k·size_pi`: degrees, or bits for a prime),
+/// then by the smallest `β`.
+///
+/// With `α` the least that meets the constraints, `α + 2β = max_k(−v_k +
+/// (2 − k)·β)` is convex and piecewise linear in `β`, and so is the
+/// largest size where that is constant (`α + 2β = g` makes `e_k = g + (k −
+/// 2)·β`). Over the integers such an order's least minimiser sits at an
+/// end of the range or next to (floor or ceiling of) a crossing of two of
+/// the lines, so only those `β` are tried ([`exponent_candidates`]): a
+/// few dozen, where the range may be thousands (the `v_k` of
+/// `ratio-disc-k0064-*` reach 640).
 fn best_exponents(v: &[Option<usize>; 5], sizes: &[usize; 5], size_pi: usize) -> [i64; 5] {
+    let (lo, hi) = exponent_range(v);
+    if hi - lo < SHORT_EXPONENT_RANGE {
+        least_exponents(v, sizes, size_pi, lo..=hi)
+    } else {
+        least_exponents(
+            v,
+            sizes,
+            size_pi,
+            exponent_candidates(v, sizes, size_pi, lo, hi),
+        )
+    }
+}
+
+/// Below this many `β`, [`best_exponents`] tries every one: listing and
+/// sorting the crossings (up to 40: 20 pairs of lines, a floor and a
+/// ceiling each) costs more than walking a range of 50 or so
+/// (`ratio-size-j6-touch`: 14.0K instructions walking, 20.8K listing).
+const SHORT_EXPONENT_RANGE: i64 = 128;
+
+/// The exponents of the least `β` (ascending) under [`best_exponents`]'s
+/// order.
+fn least_exponents(
+    v: &[Option<usize>; 5],
+    sizes: &[usize; 5],
+    size_pi: usize,
+    betas: impl IntoIterator<Item = i64>,
+) -> [i64; 5] {
+    let mut best: Option<((i64, i64), [i64; 5])> = None;
+    for beta in betas {
+        let (key, e) = exponent_key(v, sizes, size_pi, beta);
+        if best.as_ref().is_none_or(|(b, _)| key < *b) {
+            best = Some((key, e));
+        }
+    }
+    best.map_or([0; 5], |(_, e)| e)
+}
+
+/// The range of `β` that can tie with `β = 0` in [`best_exponents`].
+fn exponent_range(v: &[Option<usize>; 5]) -> (i64, i64) {
     let vmax = v.iter().flatten().copied().max().unwrap_or(0) as i64;
     let vmin = v.iter().flatten().copied().min().unwrap_or(0) as i64;
     // α + 2β >= −v_j + (2 − j)·β for every j, and β = 0 gives −v_min: no
@@ -661,24 +710,67 @@ fn best_exponents(v: &[Option<usize>; 5], sizes: &[usize; 5], size_pi: usize) ->
             _ => {}
         }
     }
-    let mut best: Option<((i64, i64), [i64; 5])> = None;
-    for beta in lo..=hi {
-        let alpha = (0..5)
-            .filter_map(|k| v[k].map(|vk| -(vk as i64) - beta * k as i64))
-            .max()
-            .unwrap_or(0);
-        let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
-        let largest = (0..5)
-            .filter(|&k| v[k].is_some())
-            .map(|k| sizes[k] as i64 + e[k] * size_pi as i64)
-            .max()
-            .unwrap_or(0);
-        let key = (alpha + 2 * beta, largest);
-        if best.as_ref().is_none_or(|(b, _)| key < *b) {
-            best = Some((key, e));
+    (lo, hi)
+}
+
+/// [`best_exponents`]'s order at `β`: `(α + 2β, largest size)` and the
+/// exponents `e_k = α + β·k`.
+fn exponent_key(
+    v: &[Option<usize>; 5],
+    sizes: &[usize; 5],
+    size_pi: usize,
+    beta: i64,
+) -> ((i64, i64), [i64; 5]) {
+    let alpha = (0..5)
+        .filter_map(|k| v[k].map(|vk| -(vk as i64) - beta * k as i64))
+        .max()
+        .unwrap_or(0);
+    let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
+    let largest = (0..5)
+        .filter(|&k| v[k].is_some())
+        .map(|k| sizes[k] as i64 + e[k] * size_pi as i64)
+        .max()
+        .unwrap_or(0);
+    ((alpha + 2 * beta, largest), e)
+}
+
+/// The `β` in `[lo, hi]` where [`best_exponents`]'s order may have its
+/// least minimiser, ascending: both ends, and the floor and ceiling of
+/// every crossing of two lines `−v_k + (2 − k)·β` (the first key) and of
+/// two lines `sizes[k] + size_pi·(k − 2)·β` (the second, up to a constant).
+fn exponent_candidates(
+    v: &[Option<usize>; 5],
+    sizes: &[usize; 5],
+    size_pi: usize,
+    lo: i64,
+    hi: i64,
+) -> Vec<i64> {
+    let mut out = vec![lo, hi];
+    let present: Vec<i64> = (0..5)
+        .filter(|&k| v[k].is_some())
+        .map(|k| k as i64)
+        .collect();
+    for (a, &j) in present.iter().enumerate() {
+        for &k in &present[a + 1..] {
+            let (vj, vk) = (
+                v[j as usize].unwrap_or(0) as i64,
+                v[k as usize].unwrap_or(0) as i64,
+            );
+            let (sj, sk) = (sizes[j as usize] as i64, sizes[k as usize] as i64);
+            // (2 − j)β − v_j = (2 − k)β − v_k, and sizes_j + π(j − 2)β =
+            // sizes_k + π(k − 2)β: both with k > j.
+            for (num, den) in [(vj - vk, k - j), (sj - sk, size_pi as i64 * (k - j))] {
+                if den > 0 {
+                    out.push(num.div_euclid(den));
+                    out.push(-(-num).div_euclid(den));
+                }
+            }
         }
     }
-    best.map_or([0; 5], |(_, e)| e)
+    out.retain(|b| (lo..=hi).contains(b));
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 /// The normalisation of the module docs, on `[c_4, …, c_0]`, with the
@@ -896,7 +988,33 @@ fn small_prime_divisors(c: &ZPoly) -> u32 {
 fn multiplicity_of_prime(c: &ZPoly, p: u32) -> usize {
     let mut nonzero: Vec<&Int> = c.coeffs().iter().filter(|x| !x.is_zero()).collect();
     nonzero.sort_by_key(|x| x.bits());
-    nonzero.iter().fold(u64::MAX, |v, x| x.valuation(p, v)) as usize
+    let Some((first, rest)) = nonzero.split_first() else {
+        return 0;
+    };
+    let mut v = first.valuation(p, u64::MAX);
+    // The coefficients usually share the content: one remainder by `p^v`
+    // shows that it divides a later one (whose valuation capped at `v` is
+    // then `v`) where counting the factors takes a division per word of
+    // them. For 2 the trailing zeros cost less than a remainder.
+    let mut power: Option<Int> = None;
+    for x in rest {
+        if v == 0 {
+            break;
+        }
+        let divides = p != 2
+            && u32::try_from(v).is_ok_and(|e| {
+                let pv = power.get_or_insert_with(|| Int::from(i64::from(p)).pow(e));
+                match pv.to_i64() {
+                    Some(word) => x.mod_u64(word as u64) == 0,
+                    None => x.is_divisible_by(pv),
+                }
+            });
+        if !divides {
+            v = x.valuation(p, v);
+            power = None;
+        }
+    }
+    v as usize
 }
 
 /// [`normalise_with`] of an exact `f` given in `i128` ([`SmallPoly`]):
@@ -1455,8 +1573,70 @@ mod tests {
             let sizes: [usize; 5] = std::array::from_fn(|k| sizes[k]);
             // Only the exponents of nonzero c_k mean anything.
             let (fast, brute) = (best_exponents(&v, &sizes, size_pi), best_exponents_brute(&v, &sizes, size_pi));
+            let (lo, hi) = exponent_range(&v);
+            let listed = least_exponents(&v, &sizes, size_pi, exponent_candidates(&v, &sizes, size_pi, lo, hi));
             for k in (0..5).filter(|&k| v[k].is_some()) {
                 proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
+                proptest::prop_assert_eq!(listed[k], brute[k], "crossings, k = {}", k);
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+        /// The multiplicity of a small prime in a polynomial's content is
+        /// the least count of it in a coefficient, counted one division
+        /// at a time: with a shared power past a word (the remainder by
+        /// `p^v`), within a word, or none, and with one coefficient
+        /// holding fewer factors than the shortest.
+        #[test]
+        fn multiplicity_of_prime_counts_the_content(
+            p in proptest::sample::select(vec![2u32, 3, 5, 7, 97]),
+            shared in 0u32..90,
+            cofactors in proptest::collection::vec(-10_000i64..10_000, 1..6),
+            fewer in proptest::option::of((0usize..6, 0u32..90)),
+        ) {
+            let pi = Int::from(i64::from(p));
+            let mut coeffs: Vec<Int> = cofactors.iter().map(|&c| Int::from(c) * pi.pow(shared)).collect();
+            if let Some((k, e)) = fewer {
+                let k = k % coeffs.len();
+                coeffs[k] = Int::from(cofactors[k]) * pi.pow(e.min(shared));
+            }
+            let c = ZPoly::new(coeffs.clone());
+            proptest::prop_assume!(!c.is_zero());
+            let count = |x: &Int| {
+                let (mut v, mut x) = (0, x.clone());
+                while x.is_divisible_by(&pi) {
+                    x = x.div_exact(&pi);
+                    v += 1;
+                }
+                v
+            };
+            let expected = coeffs.iter().filter(|x| !x.is_zero()).map(count).min().unwrap_or(0);
+            proptest::prop_assert_eq!(multiplicity_of_prime(&c, p), expected);
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+        /// The same at the sizes of long scenes (multiplicities in the
+        /// hundreds, coefficients of thousands of bits, word-long factors),
+        /// where the candidates are a few dozen of a range of hundreds.
+        #[test]
+        fn candidate_search_finds_the_best_exponents_of_long_scenes(
+            v in proptest::collection::vec(proptest::option::weighted(0.9, 0usize..160), 5),
+            sizes in proptest::collection::vec(0usize..4000, 5),
+            size_pi in 1usize..70,
+        ) {
+            let v: [Option<usize>; 5] = std::array::from_fn(|k| v[k]);
+            proptest::prop_assume!(v.iter().any(Option::is_some));
+            let sizes: [usize; 5] = std::array::from_fn(|k| sizes[k]);
+            let (fast, brute) = (best_exponents(&v, &sizes, size_pi), best_exponents_brute(&v, &sizes, size_pi));
+            let (lo, hi) = exponent_range(&v);
+            let listed = least_exponents(&v, &sizes, size_pi, exponent_candidates(&v, &sizes, size_pi, lo, hi));
+            for k in (0..5).filter(|&k| v[k].is_some()) {
+                proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
+                proptest::prop_assert_eq!(listed[k], brute[k], "crossings, k = {}", k);
             }
         }
     }
