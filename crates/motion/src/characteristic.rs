@@ -685,12 +685,29 @@ fn least_exponents(
 ) -> [i64; 5] {
     let mut best: Option<((i64, i64), [i64; 5])> = None;
     for beta in betas {
+        // The sizes only break ties: a larger `α + 2β` loses at once.
+        let first = least_alpha(v, beta) + 2 * beta;
+        if best.as_ref().is_some_and(|((b, _), _)| first > *b) {
+            continue;
+        }
         let (key, e) = exponent_key(v, sizes, size_pi, beta);
         if best.as_ref().is_none_or(|(b, _)| key < *b) {
             best = Some((key, e));
         }
     }
     best.map_or([0; 5], |(_, e)| e)
+}
+
+/// The least `α` with `α + β·k >= −v_k` for every nonzero `c_k`.
+fn least_alpha(v: &[Option<usize>; 5], beta: i64) -> i64 {
+    let mut alpha = None::<i64>;
+    for (k, vk) in v.iter().enumerate() {
+        if let Some(vk) = vk {
+            let a = -(*vk as i64) - beta * k as i64;
+            alpha = Some(alpha.map_or(a, |x| x.max(a)));
+        }
+    }
+    alpha.unwrap_or(0)
 }
 
 /// The range of `β` that can tie with `β = 0` in [`best_exponents`].
@@ -721,10 +738,7 @@ fn exponent_key(
     size_pi: usize,
     beta: i64,
 ) -> ((i64, i64), [i64; 5]) {
-    let alpha = (0..5)
-        .filter_map(|k| v[k].map(|vk| -(vk as i64) - beta * k as i64))
-        .max()
-        .unwrap_or(0);
+    let alpha = least_alpha(v, beta);
     let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
     let largest = (0..5)
         .filter(|&k| v[k].is_some())
