@@ -1572,6 +1572,30 @@ mod tests {
             .map_or([0; 5], |(_, e)| e)
     }
 
+    /// [`best_exponents`] and the search over the crossings alone
+    /// ([`exponent_candidates`], whatever the range) give the brute force's
+    /// exponents (only those of nonzero `c_k` mean anything).
+    fn exponents_are_the_brute_forces(
+        v: &[Option<usize>; 5],
+        sizes: &[usize; 5],
+        size_pi: usize,
+    ) -> Result<(), proptest::test_runner::TestCaseError> {
+        let brute = best_exponents_brute(v, sizes, size_pi);
+        let (lo, hi) = exponent_range(v);
+        let listed = least_exponents(
+            v,
+            sizes,
+            size_pi,
+            exponent_candidates(v, sizes, size_pi, lo, hi),
+        );
+        let fast = best_exponents(v, sizes, size_pi);
+        for k in (0..5).filter(|&k| v[k].is_some()) {
+            proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
+            proptest::prop_assert_eq!(listed[k], brute[k], "crossings, k = {}", k);
+        }
+        Ok(())
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
         /// The bounded search finds the full search's exponents, ties
@@ -1584,15 +1608,7 @@ mod tests {
         ) {
             let v: [Option<usize>; 5] = std::array::from_fn(|k| v[k]);
             proptest::prop_assume!(v.iter().any(Option::is_some));
-            let sizes: [usize; 5] = std::array::from_fn(|k| sizes[k]);
-            // Only the exponents of nonzero c_k mean anything.
-            let (fast, brute) = (best_exponents(&v, &sizes, size_pi), best_exponents_brute(&v, &sizes, size_pi));
-            let (lo, hi) = exponent_range(&v);
-            let listed = least_exponents(&v, &sizes, size_pi, exponent_candidates(&v, &sizes, size_pi, lo, hi));
-            for k in (0..5).filter(|&k| v[k].is_some()) {
-                proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
-                proptest::prop_assert_eq!(listed[k], brute[k], "crossings, k = {}", k);
-            }
+            exponents_are_the_brute_forces(&v, &std::array::from_fn(|k| sizes[k]), size_pi)?;
         }
     }
 
@@ -1644,14 +1660,7 @@ mod tests {
         ) {
             let v: [Option<usize>; 5] = std::array::from_fn(|k| v[k]);
             proptest::prop_assume!(v.iter().any(Option::is_some));
-            let sizes: [usize; 5] = std::array::from_fn(|k| sizes[k]);
-            let (fast, brute) = (best_exponents(&v, &sizes, size_pi), best_exponents_brute(&v, &sizes, size_pi));
-            let (lo, hi) = exponent_range(&v);
-            let listed = least_exponents(&v, &sizes, size_pi, exponent_candidates(&v, &sizes, size_pi, lo, hi));
-            for k in (0..5).filter(|&k| v[k].is_some()) {
-                proptest::prop_assert_eq!(fast[k], brute[k], "k = {}", k);
-                proptest::prop_assert_eq!(listed[k], brute[k], "crossings, k = {}", k);
-            }
+            exponents_are_the_brute_forces(&v, &std::array::from_fn(|k| sizes[k]), size_pi)?;
         }
     }
 
