@@ -213,6 +213,10 @@ pub struct Exact<'s> {
     /// `sr11(1/2) ≠ 0` by the `f64` filter where `sr0 ≡ 0` (asked only
     /// then): its roots may come from the filter alone.
     filtered11: bool,
+    /// The quantities proven identically zero on the span (`sr0`, and
+    /// `sr11` too in Theorem 5.6's branch): zero at every sample, whose
+    /// exact closed forms they then do not need.
+    identically: Vec<Quantity>,
     /// The last sample's closed forms and coefficient signs.
     sample: RefCell<Option<Sample>>,
     /// `f(λ; u)` formed before [`Oracle::prepare`] to read a sample off it,
@@ -258,6 +262,7 @@ impl<'s> Exact<'s> {
             formed: Cell::new(false),
             filtered: false,
             filtered11: false,
+            identically: Vec::new(),
             sample: RefCell::new(None),
             early: RefCell::new(f),
         })
@@ -334,7 +339,13 @@ impl SampleSigns<'_, '_> {
 }
 
 impl Signs for SampleSigns<'_, '_> {
+    /// A quantity proven identically zero is zero here without a look at
+    /// the sample (its enclosure holds 0, and the exact closed forms would
+    /// be formed only to read that 0).
     fn sign(&mut self, q: Quantity) -> SignSet {
+        if self.0.identically.contains(&q) {
+            return SignSet::exactly(0);
+        }
         SignSet::exactly(self.with(|s| s.sign(q)))
     }
     fn variations(&mut self) -> VarSet {
@@ -507,6 +518,7 @@ impl Oracle for Exact<'_> {
             self.formed.set(true);
         }
         if zero {
+            self.identically.push(q);
             return Vanishing::Identically;
         }
         let p = f.polynomial(q);
@@ -739,6 +751,74 @@ mod tests {
             };
             sr11_roots_agree(start, end, &ra, &rb, &one)?;
         }
+    }
+
+    /// Where `sr0 ≡ 0` is proven (spheres: `Vanishing::Identically`), a
+    /// sample reads `sr0 = 0` without the exact closed forms, and the
+    /// states are those of an oracle that forms them: a sphere passing
+    /// through a larger one, sampled before, inside and after.
+    #[test]
+    fn samples_read_a_vanishing_quantity_without_the_exact_forms() {
+        use ccd_algorithm::{state_at, At, Oracle, SignSet, Vanishing};
+        let sphere = |r: i64, motion| Body {
+            radii: [Rat::from(r), Rat::from(r), Rat::from(r)],
+            motion,
+        };
+        let one = [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()];
+        let scene = Scene {
+            span: [Rat::zero(), Rat::one()],
+            a: sphere(
+                2,
+                Motion::Static {
+                    center: [Rat::zero(), Rat::zero(), Rat::zero()],
+                    orientation: one.clone(),
+                },
+            ),
+            b: sphere(
+                1,
+                Motion::Translation {
+                    center: Bezier {
+                        points: vec![
+                            [Rat::from(-5), Rat::from_frac(1, 3), Rat::zero()],
+                            [Rat::from(6), Rat::from_frac(1, 3), Rat::zero()],
+                        ],
+                        weights: None,
+                    },
+                    orientation: one,
+                },
+            ),
+        };
+        let (mut told, mut plain) = (
+            Exact::new(&scene, 12).expect("a translation"),
+            Exact::new(&scene, 12).expect("a translation"),
+        );
+        told.prepare().expect("short numbers");
+        plain.prepare().expect("short numbers");
+        assert!(matches!(
+            told.vanishes(Quantity::Sr0),
+            Vanishing::Identically
+        ));
+        let mut skipped = 0;
+        for x in [
+            Rat::from_frac(1, 10),
+            Rat::from_frac(1, 2),
+            Rat::from_frac(9, 10),
+        ] {
+            assert_eq!(state_at(&told, &x), state_at(&plain, &x), "at {x}");
+            let sr0 = |o: &Exact| o.signs(At::Sample(&x), 0).sign(Quantity::Sr0);
+            assert_eq!(sr0(&told), SignSet::exactly(0), "at {x}");
+            assert_eq!(sr0(&told), sr0(&plain), "at {x}");
+            let formed = |o: &Exact| {
+                o.sample
+                    .borrow()
+                    .as_ref()
+                    .is_some_and(|s| s.exact.is_some())
+            };
+            assert!(!formed(&told), "at {x}");
+            skipped += usize::from(formed(&plain));
+        }
+        // The shortcut was taken where the plain oracle formed them.
+        assert!(skipped > 0);
     }
 
     /// The filter does answer `sr11`'s roots (what the proptest above
