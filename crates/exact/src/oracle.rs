@@ -177,10 +177,10 @@ impl Sample {
 
     /// The sign of `q` here: from the enclosure when it excludes zero
     /// (proven), else `0` when `q` is proven identically zero on the span
-    /// (`zero_on_span`: its enclosure holds that 0, and the exact closed
+    /// (`known_zero`: its enclosure holds that 0, and the exact closed
     /// forms would be formed only to read it), else from the exact closed
     /// form.
-    fn sign(&mut self, q: Quantity, zero_on_span: impl FnOnce() -> bool) -> i32 {
+    fn sign(&mut self, q: Quantity, known_zero: impl FnOnce() -> bool) -> i32 {
         if let Some(s) = self
             .filter
             .get(q)
@@ -189,7 +189,7 @@ impl Sample {
         {
             return s;
         }
-        if zero_on_span() {
+        if known_zero() {
             return 0;
         }
         let values = &self.values;
@@ -322,7 +322,10 @@ impl<'s> Exact<'s> {
         let Some(f) = &self.f else {
             return false;
         };
-        f.proven_zero(q) || (q == Quantity::Sr0 && !self.filtered && f.vanishes_identically(q))
+        // (`Var` is no closed form: never zero on the span.)
+        q != Quantity::Var
+            && (f.proven_zero(q)
+                || (q == Quantity::Sr0 && !self.filtered && f.vanishes_identically(q)))
     }
 
     /// `deg sr0` (`None` when `sr0 ≡ 0`) without forming `sr0`: `0` for a
@@ -759,31 +762,28 @@ mod tests {
         }
     }
 
-    /// Where `sr0 ≡ 0` (spheres), a sample reads `sr0 = 0` without the
-    /// exact closed forms, before the plan has asked (decided on the spot,
-    /// as for the state at `t0` of a full query) and after it has proven
-    /// `Vanishing::Identically`; every sign is the exact closed forms' (a
-    /// reference `Sample` that forms them), and where that reference had
-    /// to form them the oracle did not. A sphere passing through a larger
-    /// one, sampled before, inside and after.
-    #[test]
-    fn samples_read_a_vanishing_quantity_without_the_exact_forms() {
-        use ccd_algorithm::{At, Oracle, SignSet, Vanishing};
-        let sphere = |r: i64, motion| Body {
-            radii: [Rat::from(r), Rat::from(r), Rat::from(r)],
+    /// Two spheres, the smaller passing through the larger (`sr0 ≡ 0`),
+    /// or two ellipsoids (`sr0` proven nonzero by the filter).
+    fn passing(spheres: bool) -> Scene {
+        let body = |r: i64, motion| Body {
+            radii: if spheres {
+                [Rat::from(r), Rat::from(r), Rat::from(r)]
+            } else {
+                [Rat::from(r), Rat::from(3 * r), Rat::from_frac(r, 2)]
+            },
             motion,
         };
         let one = [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()];
-        let scene = Scene {
+        Scene {
             span: [Rat::zero(), Rat::one()],
-            a: sphere(
+            a: body(
                 2,
                 Motion::Static {
                     center: [Rat::zero(), Rat::zero(), Rat::zero()],
                     orientation: one.clone(),
                 },
             ),
-            b: sphere(
+            b: body(
                 1,
                 Motion::Translation {
                     center: Bezier {
@@ -793,10 +793,23 @@ mod tests {
                         ],
                         weights: None,
                     },
-                    orientation: one,
+                    orientation: [Rat::from(2), Rat::one(), Rat::zero(), Rat::one()],
                 },
             ),
-        };
+        }
+    }
+
+    /// Where `sr0 ≡ 0` (spheres), a sample reads `sr0 = 0` without the
+    /// exact closed forms: at the first sample before the plan has asked
+    /// (decided on the spot, as for the state at `t0` of a full query),
+    /// and after. Every sign is the exact closed forms' of the sample's
+    /// values. Asking about `sr11` forms nothing, and where the filter
+    /// proved `sr0(1/2) ≠ 0` (ellipsoids) asking about `sr0` forms nothing
+    /// either: the plan would not ask.
+    #[test]
+    fn samples_read_a_vanishing_quantity_without_the_exact_forms() {
+        use ccd_algorithm::{At, Oracle, SignSet, Vanishing};
+        let scene = passing(true);
         let mut o = Exact::new(&scene, 12).expect("a translation");
         o.prepare().expect("short numbers");
         let quantities = [
@@ -806,16 +819,18 @@ mod tests {
             Quantity::Sr10,
             Quantity::Sr0,
         ];
-        let mut skipped = 0;
-        let samples = [1, 2, 3, 5, 7, 9].map(|k| Rat::from_frac(k, 10));
-        for (i, x) in samples.iter().enumerate() {
-            if i == 3 {
+        for (i, x) in [1, 2, 5, 9]
+            .map(|k| Rat::from_frac(k, 10))
+            .iter()
+            .enumerate()
+        {
+            if i == 2 {
                 assert!(matches!(o.vanishes(Quantity::Sr0), Vanishing::Identically));
             }
             let ours = quantities.map(|q| o.signs(At::Sample(x), 0).sign(q));
-            let mut reference = Sample::new(x.clone(), o.values_at(x));
-            let exact = quantities.map(|q| SignSet::exactly(reference.sign(q, || false)));
-            assert_eq!(ours, exact, "at {x}");
+            let exact = closed_forms(&o.values_at(x));
+            let want = quantities.map(|q| SignSet::exactly(exact.get(q).map_or(0, Int::signum)));
+            assert_eq!(ours, want, "at {x}");
             assert_eq!(ours[4], SignSet::exactly(0), "at {x}");
             let formed = o
                 .sample
@@ -823,10 +838,16 @@ mod tests {
                 .as_ref()
                 .is_some_and(|s| s.exact.is_some());
             assert!(!formed, "at {x}");
-            skipped += usize::from(reference.exact.is_some());
         }
-        // The reference formed them somewhere, on both sides of the plan.
-        assert!(skipped >= 2, "{skipped}");
+        assert!(!o.zero_on_span(Quantity::Sr11));
+        assert!(!o.coefficients().formed(Quantity::Sr11));
+
+        let scene = passing(false);
+        let mut o = Exact::new(&scene, 12).expect("a translation");
+        o.prepare().expect("short numbers");
+        assert!(o.filtered, "the filter proves sr0(1/2) ≠ 0");
+        assert!(!o.zero_on_span(Quantity::Sr0));
+        assert!(!o.coefficients().formed(Quantity::Sr0));
     }
 
     /// The filter does answer `sr11`'s roots (what the proptest above
