@@ -762,41 +762,57 @@ mod tests {
         }
     }
 
-    /// Two spheres, the smaller passing through the larger (`sr0 ≡ 0`),
-    /// or two ellipsoids (`sr0` proven nonzero by the filter).
-    fn passing(spheres: bool) -> Scene {
-        let body = |r: i64, motion| Body {
-            radii: if spheres {
+    /// Body `a` static at the origin, `b` translating from `start` to
+    /// `end` over `[0, 1]`, each with its radii and orientation.
+    fn passing(
+        (ra, qa): ([Rat; 3], Quat),
+        (rb, qb): ([Rat; 3], Quat),
+        start: [Rat; 3],
+        end: [Rat; 3],
+    ) -> Scene {
+        let a = Body {
+            radii: ra,
+            motion: Motion::Static {
+                center: [Rat::zero(), Rat::zero(), Rat::zero()],
+                orientation: qa,
+            },
+        };
+        let b = Body {
+            radii: rb,
+            motion: Motion::Translation {
+                center: Bezier {
+                    points: vec![start, end],
+                    weights: None,
+                },
+                orientation: qb,
+            },
+        };
+        Scene {
+            span: [Rat::zero(), Rat::one()],
+            a,
+            b,
+        }
+    }
+
+    /// A body of radius 1 passing through one of radius 2: spheres
+    /// (`sr0 ≡ 0`), or ellipsoids of those scales (`sr0` proven nonzero by
+    /// the filter).
+    fn passing_through(spheres: bool) -> Scene {
+        let radii = |r: i64| {
+            if spheres {
                 [Rat::from(r), Rat::from(r), Rat::from(r)]
             } else {
                 [Rat::from(r), Rat::from(3 * r), Rat::from_frac(r, 2)]
-            },
-            motion,
+            }
         };
         let one = [Rat::one(), Rat::zero(), Rat::zero(), Rat::zero()];
-        Scene {
-            span: [Rat::zero(), Rat::one()],
-            a: body(
-                2,
-                Motion::Static {
-                    center: [Rat::zero(), Rat::zero(), Rat::zero()],
-                    orientation: one.clone(),
-                },
-            ),
-            b: body(
-                1,
-                Motion::Translation {
-                    center: Bezier {
-                        points: vec![
-                            [Rat::from(-5), Rat::from_frac(1, 3), Rat::zero()],
-                            [Rat::from(6), Rat::from_frac(1, 3), Rat::zero()],
-                        ],
-                        weights: None,
-                    },
-                    orientation: [Rat::from(2), Rat::one(), Rat::zero(), Rat::one()],
-                },
-            ),
-        }
+        let turned = [Rat::from(2), Rat::one(), Rat::zero(), Rat::one()];
+        passing(
+            (radii(2), one),
+            (radii(1), turned),
+            [Rat::from(-5), Rat::from_frac(1, 3), Rat::zero()],
+            [Rat::from(6), Rat::from_frac(1, 3), Rat::zero()],
+        )
     }
 
     /// Where `sr0 ≡ 0` (spheres), a sample reads `sr0 = 0` without the
@@ -809,7 +825,7 @@ mod tests {
     #[test]
     fn samples_read_a_vanishing_quantity_without_the_exact_forms() {
         use ccd_algorithm::{At, Oracle, SignSet, Vanishing};
-        let scene = passing(true);
+        let scene = passing_through(true);
         let mut o = Exact::new(&scene, 12).expect("a translation");
         o.prepare().expect("short numbers");
         let quantities = [
@@ -842,7 +858,7 @@ mod tests {
         assert!(!o.zero_on_span(Quantity::Sr11));
         assert!(!o.coefficients().formed(Quantity::Sr11));
 
-        let scene = passing(false);
+        let scene = passing_through(false);
         let mut o = Exact::new(&scene, 12).expect("a translation");
         o.prepare().expect("short numbers");
         assert!(o.filtered, "the filter proves sr0(1/2) ≠ 0");
@@ -876,32 +892,8 @@ mod tests {
         q: &Quat,
     ) -> Result<Option<usize>, proptest::test_runner::TestCaseError> {
         use ccd_algorithm::{Found, Oracle, Vanishing};
-        let body = |r: &Rat, motion| Body {
-            radii: [r.clone(), r.clone(), r.clone()],
-            motion,
-        };
-        let a = body(
-            ra,
-            Motion::Static {
-                center: [Rat::zero(), Rat::zero(), Rat::zero()],
-                orientation: q.clone(),
-            },
-        );
-        let b = body(
-            rb,
-            Motion::Translation {
-                center: Bezier {
-                    points: vec![start, end],
-                    weights: None,
-                },
-                orientation: q.clone(),
-            },
-        );
-        let scene = Scene {
-            span: [Rat::zero(), Rat::one()],
-            a,
-            b,
-        };
+        let sphere = |r: &Rat| [r.clone(), r.clone(), r.clone()];
+        let scene = passing((sphere(ra), q.clone()), (sphere(rb), q.clone()), start, end);
         let mut o = Exact::new(&scene, 12).expect("a translation");
         o.prepare().expect("short numbers");
         proptest::prop_assert!(matches!(o.vanishes(Quantity::Sr0), Vanishing::Identically));

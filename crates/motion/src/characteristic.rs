@@ -691,11 +691,14 @@ fn least_exponents(
     let mut best: Option<((i64, i64), [i64; 5])> = None;
     for beta in betas {
         // The sizes only break ties: a larger `α + 2β` loses at once.
-        let first = least_alpha(v, beta) + 2 * beta;
-        if best.as_ref().is_some_and(|((b, _), _)| first > *b) {
+        let alpha = least_alpha(v, beta);
+        if best
+            .as_ref()
+            .is_some_and(|((b, _), _)| alpha + 2 * beta > *b)
+        {
             continue;
         }
-        let (key, e) = exponent_key(v, sizes, size_pi, beta);
+        let (key, e) = exponent_key(v, sizes, size_pi, alpha, beta);
         if best.as_ref().is_none_or(|(b, _)| key < *b) {
             best = Some((key, e));
         }
@@ -735,15 +738,15 @@ fn exponent_range(v: &[Option<usize>; 5]) -> (i64, i64) {
     (lo, hi)
 }
 
-/// [`best_exponents`]'s order at `β`: `(α + 2β, largest size)` and the
-/// exponents `e_k = α + β·k`.
+/// [`best_exponents`]'s order at `β` (with `α` its [`least_alpha`]):
+/// `(α + 2β, largest size)` and the exponents `e_k = α + β·k`.
 fn exponent_key(
     v: &[Option<usize>; 5],
     sizes: &[usize; 5],
     size_pi: usize,
+    alpha: i64,
     beta: i64,
 ) -> ((i64, i64), [i64; 5]) {
-    let alpha = least_alpha(v, beta);
     let e: [i64; 5] = std::array::from_fn(|k| alpha + beta * k as i64);
     let largest = (0..5)
         .filter(|&k| v[k].is_some())
