@@ -261,27 +261,23 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
 ) -> [R; 5] {
     // Column c of [M_A | M_B] (c < 4 from A).
     let entry = |r: usize, c: usize| if c < 4 { &ma[r][c] } else { &mb[r][c - 4] };
-    // 2×2 minors of rows (0, 1) and (2, 3) for every column pair i < j.
-    let mut top: [[R; 8]; 8] = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
-    let mut bottom = top.clone();
-    for i in 0..8 {
-        for j in i + 1..8 {
-            let minor = |r: usize| {
-                let product = |x: &R, y: &R| (!x.is_zero() && !y.is_zero()).then(|| x.times(y));
-                match (
-                    product(entry(r, i), entry(r + 1, j)),
-                    product(entry(r, j), entry(r + 1, i)),
-                ) {
-                    (Some(x), Some(y)) => x.minus(&y),
-                    (Some(x), None) => x,
-                    (None, Some(y)) => y.negated(),
-                    (None, None) => R::zero(),
-                }
-            };
-            top[i][j] = minor(0);
-            bottom[i][j] = minor(2);
+    // 2×2 minors of rows (0, 1) and (2, 3) for every column pair i < j,
+    // built in place at their triangular index (`pair_index`).
+    let minor = |r: usize, k: usize| {
+        let (i, j) = COLUMN_PAIRS[k];
+        let product = |x: &R, y: &R| (!x.is_zero() && !y.is_zero()).then(|| x.times(y));
+        match (
+            product(entry(r, i), entry(r + 1, j)),
+            product(entry(r, j), entry(r + 1, i)),
+        ) {
+            (Some(x), Some(y)) => x.minus(&y),
+            (Some(x), None) => x,
+            (None, Some(y)) => y.negated(),
+            (None, None) => R::zero(),
         }
-    }
+    };
+    let top: [R; 28] = std::array::from_fn(|k| minor(0, k));
+    let bottom: [R; 28] = std::array::from_fn(|k| minor(2, k));
     let mut coeffs: [R; 5] = std::array::from_fn(|_| R::zero());
     // Grouped by A's columns outside T (`outside_a`, whose product `pa`
     // multiplies the inner sum once): 70 products by `pb` and 16 by `pa`
@@ -326,7 +322,10 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
             // T, the complementary positions (r, s) for the bottom one.
             let mut plucker = R::zero();
             for ((p, q), (r, s), positive) in LAPLACE_PAIRS {
-                let (upper, lower) = (&top[cols[p]][cols[q]], &bottom[cols[r]][cols[s]]);
+                let (upper, lower) = (
+                    &top[pair_index(cols[p], cols[q])],
+                    &bottom[pair_index(cols[r], cols[s])],
+                );
                 if upper.is_zero() || lower.is_zero() {
                     continue;
                 }
@@ -358,6 +357,29 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
     coeffs
 }
 
+/// The column pairs `i < j` of `[M_A | M_B]` in lexicographic order: the
+/// `k`-th is at [`pair_index`] `k`.
+const COLUMN_PAIRS: [(usize, usize); 28] = {
+    let mut pairs = [(0, 0); 28];
+    let (mut i, mut k) = (0, 0);
+    while i < 8 {
+        let mut j = i + 1;
+        while j < 8 {
+            pairs[k] = (i, j);
+            k += 1;
+            j += 1;
+        }
+        i += 1;
+    }
+    pairs
+};
+
+/// The index of the column pair `i < j` in [`COLUMN_PAIRS`]: the `7 + 6 +
+/// … ` pairs of the rows before `i`, then `j − i − 1`.
+const fn pair_index(i: usize, j: usize) -> usize {
+    i * (15 - i) / 2 + j - i - 1
+}
+
 /// The homogeneous columns of `[M_A | M_B]`: the last of each placement.
 const HOMOGENEOUS: u32 = 1 << 3 | 1 << 7;
 
@@ -379,6 +401,14 @@ mod tests {
     use super::*;
     use ccd_arith::Int;
     use proptest::prelude::*;
+
+    #[test]
+    fn pair_index_finds_each_column_pair() {
+        for (k, &(i, j)) in COLUMN_PAIRS.iter().enumerate() {
+            assert!(i < j && j < 8);
+            assert_eq!(pair_index(i, j), k);
+        }
+    }
 
     fn mat(v: &[i64]) -> Mat4<Int> {
         std::array::from_fn(|i| std::array::from_fn(|j| Int::from(v[4 * i + j])))
