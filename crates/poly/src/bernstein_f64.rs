@@ -219,8 +219,34 @@ fn convolve(a: &[f64], b: &[f64]) -> Coeffs {
 }
 
 /// [`convolve`] by the running sums: output `i + j` adds `a_i·b_j` for
-/// `i` ascending (zero `a_i` skipped).
+/// `i` ascending (zero `a_i` skipped). Each output's sum is the same IEEE
+/// operations in the same order at any vector width (no contraction into
+/// fused multiply-adds), so the AVX build of the loop
+/// ([`convolve_sums_avx`]) gives the same bits, four lanes at a time.
 fn convolve_sums(a: &[f64], b: &[f64]) -> Coeffs {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        // SAFETY: the CPU has AVX (checked just above), the only
+        // requirement of `convolve_sums_avx`.
+        return unsafe { convolve_sums_avx(a, b) };
+    }
+    convolve_sums_with(a, b)
+}
+
+/// [`convolve_sums`] compiled for AVX.
+///
+/// # Safety
+///
+/// The CPU must support AVX.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn convolve_sums_avx(a: &[f64], b: &[f64]) -> Coeffs {
+    convolve_sums_with(a, b)
+}
+
+/// The loop of [`convolve_sums`], inlined into each build of it.
+#[inline(always)]
+fn convolve_sums_with(a: &[f64], b: &[f64]) -> Coeffs {
     let mut out = Coeffs::zeros(a.len() + b.len() - 1);
     for (i, &x) in a.iter().enumerate() {
         if x == 0.0 {
@@ -520,6 +546,28 @@ mod tests {
                 proptest::prop_assert_eq!(bits(&fast), bits(&sums));
                 proptest::prop_assert_eq!(matches!(fast, Coeffs::One(_)), matches!(sums, Coeffs::One(_)));
             }
+        }
+
+        /// The running sums (the AVX build where the CPU has it) are the
+        /// scalar loop's bits: the same operations in the same order per
+        /// output, whatever the vector width (lengths past a vector, zeros
+        /// skipped, signed zeros, subnormals, overflow).
+        #[test]
+        fn running_sums_are_the_scalar_loop(
+            a in proptest::collection::vec(proptest::sample::select(vec![0.0, -0.0, 1.0, -2.5, 5e-324, 3.7e-310, 1e308, -7.25, 0.1, -1e-3]), 2..40),
+            b in proptest::collection::vec(proptest::sample::select(vec![0.0, -0.0, 3.0, -0.3, 5e-324, 1e300, -1e300, 2.2e-308, 0.7]), 2..40),
+        ) {
+            let mut scalar = vec![0.0f64; a.len() + b.len() - 1];
+            for (i, &x) in a.iter().enumerate() {
+                if x == 0.0 {
+                    continue;
+                }
+                for (j, &y) in b.iter().enumerate() {
+                    scalar[i + j] = std::hint::black_box(scalar[i + j] + x * y);
+                }
+            }
+            let bits = |c: &[f64]| c.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            proptest::prop_assert_eq!(bits(&convolve_sums(&a, &b)), bits(&scalar));
         }
     }
 
