@@ -69,6 +69,29 @@ impl Interval {
         hi: f64::INFINITY,
     };
 
+    /// `self · x`, bit for bit what `*` gives, from two products instead of
+    /// four when `x ≥ 0` (interval Horner over `t ≥ 0`, the solver's
+    /// innermost loop). With `x.lo ≥ 0` the least of the four
+    /// corner products is `lo·x.lo` when `lo ≥ 0` and `lo·x.hi` otherwise,
+    /// the greatest `hi·x.hi` when `hi ≥ 0` and `hi·x.lo` otherwise; that
+    /// holds for the exact products, and rounding to nearest is monotone,
+    /// so for the rounded ones too (a zero's sign is lost in the widening
+    /// either way). No corner is NaN while both factors are finite; any
+    /// other factor goes through `*`.
+    #[inline]
+    pub fn mul_fast(self, x: Interval) -> Interval {
+        let finite = |v: &Interval| v.lo > f64::NEG_INFINITY && v.hi < f64::INFINITY;
+        if !(x.lo >= 0.0 && finite(&x) && finite(&self)) {
+            return self * x;
+        }
+        let lo = self.lo * if self.lo >= 0.0 { x.lo } else { x.hi };
+        let hi = self.hi * if self.hi >= 0.0 { x.hi } else { x.lo };
+        Interval {
+            lo: down(lo),
+            hi: up(hi),
+        }
+    }
+
     /// The point `[x, x]`.
     pub fn point(x: f64) -> Interval {
         Interval { lo: x, hi: x }
@@ -374,6 +397,25 @@ mod tests {
                 let e = Interval::from_rat(&exact);
                 prop_assert!(iv.lo <= e.hi && e.lo <= iv.hi);
                 prop_assert!(iv.lo <= exact.to_f64() + 1e-300 && exact.to_f64() - 1e-300 <= iv.hi);
+            }
+        }
+
+        /// `mul_fast` is `*` bit for bit, for every factor: signs mixed,
+        /// zeros of either sign, tiny and huge magnitudes (products that
+        /// underflow or overflow), infinite ends.
+        #[test]
+        fn mul_fast_is_mul(
+            ends in proptest::array::uniform4(prop_oneof![
+                Just(0.0), Just(-0.0), Just(f64::INFINITY), Just(f64::NEG_INFINITY),
+                Just(f64::MAX), Just(f64::MIN_POSITIVE), Just(5e-324),
+                -1e3f64..1e3, -1e300f64..1e300, -1e-300f64..1e-300,
+            ]),
+        ) {
+            let interval = |a: f64, b: f64| Interval::new(a.min(b), a.max(b));
+            let (a, x) = (interval(ends[0], ends[1]), interval(ends[2], ends[3]));
+            for (p, q) in [(a, x), (x, a), (a, a), (a, Interval::new(0.0, x.hi.abs()))] {
+                let (fast, slow) = (p.mul_fast(q), p * q);
+                prop_assert_eq!((fast.lo.to_bits(), fast.hi.to_bits()), (slow.lo.to_bits(), slow.hi.to_bits()), "{:?} · {:?}", p, q);
             }
         }
 

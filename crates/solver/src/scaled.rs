@@ -76,7 +76,7 @@ impl ScaledPoly {
             polys.map(|p| &p.coeffs[..]),
             0,
             Interval::point(0.0),
-            |acc, _, c| acc * x + *c,
+            |acc, _, c| acc.mul_fast(x) + *c,
         )
     }
 
@@ -120,7 +120,10 @@ impl ScaledPoly {
             polys.map(|p| p.derived()),
             1,
             (zero, zero),
-            |(d1, d2), i, d| (d1 * x + d[0], if i >= 2 { d2 * x + d[1] } else { d2 }),
+            |(d1, d2), i, d| {
+                let d1 = d1.mul_fast(x) + d[0];
+                (d1, if i >= 2 { d2.mul_fast(x) + d[1] } else { d2 })
+            },
         )
     }
 
