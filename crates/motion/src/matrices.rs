@@ -213,7 +213,7 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
             let l: Mat3<ZPoly> = std::array::from_fn(|r| std::array::from_fn(|k| poly(r, k)));
             let d: [ZPoly; 3] = std::array::from_fn(|r| poly(r, 3));
             check_weight(&w)?;
-            let det_l = det3(&l);
+            let det_l = small_det3(&l);
             if let Some(at) = first_root_in_span(&det_l.primitive_part(), span) {
                 return Err(MotionError::SingularAffine { at });
             }
@@ -222,6 +222,15 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
         }
         Motion::Helical { .. } => Err(MotionError::NotRational { kind: "helical" }),
     }
+}
+
+/// `det L` of a matrix of polynomials: in i128 ([`SmallPoly`], lifted
+/// back) when the numbers fit, else over [`ZPoly`]; the same polynomial.
+fn small_det3(l: &Mat3<ZPoly>) -> ZPoly {
+    let small = l
+        .each_ref()
+        .map(|row| row.each_ref().map(SmallPoly::lowered));
+    det3(&small).to_zpoly().unwrap_or_else(|| det3(l))
 }
 
 /// `(M(q), |q|²)` of a quaternion curve: in i128 ([`SmallPoly`], lifted
@@ -789,6 +798,7 @@ pub fn moving_quadric(body: &Body, span: &[Rat; 2]) -> Result<Mat4<ZPoly>, Motio
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::any;
 
     proptest::proptest! {
         /// Whether `first_root_in_span` finds a root is whether `p` has one
@@ -819,6 +829,18 @@ mod tests {
             let span = [Rat::zero(), Rat::one()];
             let inside = roots.iter().any(|&(n, d)| (0..=d).contains(&n));
             proptest::prop_assert_eq!(first_root_in_span(&p, &span).is_some(), inside);
+        }
+
+        /// `small_det3` is `det3` over `ZPoly`, short entries (the i128
+        /// route) and long ones (past i128: the fallback) alike.
+        #[test]
+        fn small_det3_is_det3(
+            entries in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 0..4), 9),
+            long in 0u64..100,
+        ) {
+            let mut e = entries.iter().map(|c| ZPoly::new(c.iter().map(|&x| Int::from(x).shl(long)).collect()));
+            let l: Mat3<ZPoly> = std::array::from_fn(|_| std::array::from_fn(|_| e.next().expect("nine")));
+            proptest::prop_assert_eq!(small_det3(&l), det3(&l));
         }
     }
 
