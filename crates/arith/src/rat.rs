@@ -283,9 +283,39 @@ impl Sub<&Rat> for &Rat {
 impl Mul<&Rat> for &Rat {
     type Output = Rat;
     fn mul(self, o: &Rat) -> Rat {
+        if let Some(product) = self.mul_words(o) {
+            return product;
+        }
         Rat::reduce(&self.num * &o.num, &self.den * &o.den)
     }
 }
+
+impl Rat {
+    /// `self · o` in machine words when every part fits `i64` (a scene's
+    /// short decimals): cross cancellation, `(a/b)·(c/d) = (a/g₁)(c/g₂) /
+    /// ((b/g₂)(d/g₁))` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`, is already
+    /// in lowest terms for reduced factors (whatever divided a numerator
+    /// and the other denominator is gone, and each factor was coprime), so
+    /// it is the very `Rat` of the general route, with two word gcds and
+    /// no big-integer product or gcd. `None` when a part is longer.
+    fn mul_words(&self, o: &Rat) -> Option<Rat> {
+        let (a, b) = (self.num.to_i64()?, self.den.to_i64()?);
+        let (c, d) = (o.num.to_i64()?, o.den.to_i64()?);
+        if a == 0 || c == 0 {
+            return Some(Rat::zero());
+        }
+        // Denominators are positive, so each gcd divides a positive i64.
+        let gcd = |x: i64, y: i64| crate::gcd_u128(x.unsigned_abs().into(), y as u128) as i64;
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        let num = i128::from(a / g1) * i128::from(c / g2);
+        let den = i128::from(b / g2) * i128::from(d / g1);
+        Some(Rat {
+            num: Int::from_i128(num),
+            den: Int::from_i128(den),
+        })
+    }
+}
+
 impl Div<&Rat> for &Rat {
     type Output = Rat;
     /// Panics on division by zero; callers divide by values proven nonzero.
@@ -366,6 +396,27 @@ mod tests {
             prop_assert_eq!(Rat::from_f64_exact(x), from_f64_by_reduction(x));
             let y = m as f64 * 2f64.powi(e);
             prop_assert_eq!(Rat::from_f64_exact(y), from_f64_by_reduction(y));
+        }
+    }
+
+    proptest! {
+        /// The word product is the reduced general product: parts up to
+        /// `i64`'s ends (so products past `i64`), shared factors across the
+        /// factors, zeros, and one part past a word (no word product).
+        #[test]
+        fn word_products_are_the_reduction(
+            parts in proptest::array::uniform4(prop_oneof![any::<i64>(), -100i64..100, Just(i64::MIN), Just(i64::MAX)]),
+            shared in 1i64..1000,
+            long in any::<bool>(),
+        ) {
+            let rat = |n: i64, d: i64| Rat::new(Int::from(n), Int::from(d.max(1))).expect("positive");
+            let x = rat(parts[0], parts[1].saturating_abs());
+            let y = rat(parts[2].saturating_mul(shared), parts[3].saturating_abs().saturating_mul(shared));
+            let y = if long { &y * &Rat::from_int(Int::from(i64::MAX).pow(2)) } else { y };
+            let general = Rat::reduce(&x.num * &y.num, &x.den * &y.den);
+            prop_assert_eq!(x.mul_words(&y).is_some(), !long || y.num.is_zero());
+            prop_assert_eq!(&x * &y, general.clone());
+            prop_assert_eq!(&y * &x, general);
         }
     }
 
