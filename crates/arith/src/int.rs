@@ -259,6 +259,10 @@ impl Int {
     }
     /// The image of an `i128`.
     pub fn from_i128(v: i128) -> Int {
+        // Most values met are short: one word, no limb slice.
+        if let Ok(v) = i64::try_from(v) {
+            return Int::from_i64(v);
+        }
         let m = v.unsigned_abs();
         Int(k::from_u64_limbs(v < 0, &[m as u64, (m >> 64) as u64]))
     }

@@ -305,7 +305,11 @@ impl Rat {
             return Some(Rat::zero());
         }
         // Denominators are positive, so each gcd divides a positive i64.
-        let gcd = |x: i64, y: i64| crate::gcd_u128(x.unsigned_abs().into(), y as u128) as i64;
+        // A denominator 1 (integers, the usual weights) shares nothing.
+        let gcd = |x: i64, y: i64| match y {
+            1 => 1,
+            _ => crate::gcd_u128(x.unsigned_abs().into(), y as u128) as i64,
+        };
         let (g1, g2) = (gcd(a, d), gcd(c, b));
         let num = i128::from(a / g1) * i128::from(c / g2);
         let den = i128::from(b / g2) * i128::from(d / g1);
