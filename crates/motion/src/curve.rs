@@ -99,6 +99,11 @@ pub struct PolyCurve<const N: usize> {
 /// number on the way fits, else over [`Int`] ([`bernstein_to_power`]):
 /// the same polynomials.
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
+    small_poly_curve(curve).unwrap_or_else(|| exact_poly_curve(curve))
+}
+
+/// [`to_poly_curve`] over [`Int`].
+fn exact_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
     // Borrowed where no product is needed (no weights).
     let one = Rat::one();
     let weights: Vec<Cow<Rat>> = match &curve.weights {
@@ -114,65 +119,117 @@ pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
             .collect(),
         None => curve.points.iter().map(|p| Cow::Borrowed(&p[k])).collect(),
     });
-    small_poly_curve(&values, &weights).unwrap_or_else(|| exact_poly_curve(&values, &weights))
-}
-
-/// [`to_poly_curve`] of the values `wᵢ·Pᵢ[k]` and weights `wᵢ` over [`Int`].
-fn exact_poly_curve<const N: usize>(
-    values: &[Vec<Cow<Rat>>; N],
-    weights: &[Cow<Rat>],
-) -> PolyCurve<N> {
-    let den: Int = common_denominator(values.iter().flatten().chain(weights).map(|x| &**x));
+    let den: Int = common_denominator(values.iter().flatten().chain(&weights).map(|x| &**x));
     let scaled =
         |v: &[Cow<Rat>]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
     PolyCurve {
         numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),
-        denominator: bernstein_to_power(&scaled(weights)),
+        denominator: bernstein_to_power(&scaled(&weights)),
     }
 }
 
-/// [`to_poly_curve`] over [`SmallInt`]: `None` if a number does not fit
-/// (or the degree is beyond the binomials' `i64` range).
-fn small_poly_curve<const N: usize>(
-    values: &[Vec<Cow<Rat>>; N],
-    weights: &[Cow<Rat>],
-) -> Option<PolyCurve<N>> {
-    let n = weights.len().checked_sub(1)?;
-    if n > 60 {
+/// Degrees up to which [`small_poly_curve`] tries `i128` (every binomial
+/// `C(k, i)`, `k ≤ 60`, fits an `i64`).
+const SMALL_CURVE_DEGREE: usize = 60;
+
+/// [`to_poly_curve`] in `i128` (checked: `None` if a number on the way does
+/// not fit, or a value is not a fraction of machine words): the values
+/// `wᵢ·Pᵢ[k]` and weights `wᵢ` as reduced word fractions in one buffer,
+/// their lcm `L`, and per coordinate `Σ bᵢ·Bᵢⁿ(u) = Σ_k C(n, k)·(Σ_(i≤k)
+/// (−1)^(k−i)·C(k, i)·bᵢ)·u^k` for `bᵢ = L·valueᵢ`, the binomials formed
+/// along the way. No allocation but the buffer and the polynomials.
+fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurve<N>> {
+    let count = curve.points.len();
+    let n = count.checked_sub(1)?;
+    if n > SMALL_CURVE_DEGREE {
         return None;
     }
-    let den: SmallInt = common_denominator(values.iter().flatten().chain(weights).map(|x| &**x));
-    den.to_i128()?;
-    // C(k, i) for k ≤ n, a row at a time (Pascal), as SmallInts.
-    let mut pascal: Vec<Vec<SmallInt>> = Vec::with_capacity(n + 1);
-    for k in 0..=n {
-        let row = (0..=k)
-            .map(|i| match i {
-                0 => SmallInt::one(),
-                _ if i == k => SmallInt::one(),
-                _ => pascal[k - 1][i - 1].plus(&pascal[k - 1][i]),
-            })
-            .collect();
-        pascal.push(row);
+    let word = |x: &Rat| Some((i128::from(x.numer().to_i64()?), x.denom().to_i64()?));
+    // Column k < N holds the values wᵢ·Pᵢ[k], column N the weights.
+    let mut fractions: Vec<(i128, i64)> = Vec::with_capacity((N + 1) * count);
+    for k in 0..N {
+        for (i, p) in curve.points.iter().enumerate() {
+            fractions.push(match &curve.weights {
+                Some(w) => word(&(&p[k] * &w[i]))?,
+                None => word(&p[k])?,
+            });
+        }
     }
-    // Σ bᵢ·Bᵢⁿ(u) = Σ_k C(n, k)·(Σ_(i≤k) (−1)^(k−i)·C(k, i)·bᵢ)·u^k.
-    let power = |v: &[Cow<Rat>]| -> Option<ZPoly> {
-        let b: Vec<SmallInt> = v.iter().map(|x| times_denominator(x, &den)).collect();
-        let coeffs: Option<Vec<Int>> = (0..=n)
-            .map(|k| {
-                let mut s = SmallInt::zero();
-                for (i, bi) in b.iter().enumerate().take(k + 1) {
-                    s.add_product(&pascal[k][i], bi, (k - i) % 2 == 1);
-                }
-                s.times(&pascal[n][k]).to_int()
-            })
-            .collect();
-        Some(ZPoly::new(coeffs?))
+    match &curve.weights {
+        Some(w) => {
+            for x in w {
+                fractions.push(word(x)?);
+            }
+        }
+        None => fractions.extend(std::iter::repeat_n((1, 1), count)),
+    }
+    // The lcm of the (positive) denominators.
+    let mut den: i128 = 1;
+    for &(_, d) in &fractions {
+        let d = i128::from(d);
+        if d != 1 && d != den {
+            let g = ccd_arith::gcd_u128(den as u128, d as u128) as i128;
+            den = (den / g).checked_mul(d)?;
+        }
+    }
+    // The binomial rows C(k, ·) for k ≤ n, by Pascal's rule in one flat
+    // buffer (row k at offset k(k + 1)/2): additions, no division.
+    let mut pascal: Vec<i64> = Vec::with_capacity((n + 1) * (n + 2) / 2);
+    for k in 0..=n {
+        // Row k − 1 ends where row k begins.
+        let previous = pascal.len() - k;
+        for i in 0..=k {
+            pascal.push(match i {
+                0 => 1,
+                _ if i == k => 1,
+                _ => pascal[previous + i - 1] + pascal[previous + i],
+            });
+        }
+    }
+    let row = |k: usize| &pascal[k * (k + 1) / 2..][..=k];
+    // L/d in machine words when L fits one (a division instruction, not
+    // the 128-bit library call).
+    let cofactor = |d: i64| match i64::try_from(den) {
+        Ok(l) => i128::from(l / d),
+        Err(_) => den / i128::from(d),
     };
-    let numerators: Vec<ZPoly> = values.iter().map(|v| power(v)).collect::<Option<_>>()?;
+    // One buffer for every column's bᵢ.
+    let mut b: Vec<i128> = Vec::with_capacity(count);
+    let mut power = |column: &[(i128, i64)]| -> Option<ZPoly> {
+        b.clear();
+        for &(x, d) in column {
+            b.push(x.checked_mul(cofactor(d))?);
+        }
+        // Σ_(i≤k) C(k, i)·|bᵢ| ≤ 2^k·max|bᵢ| and C(n, k) ≤ 2^n: within
+        // 2^125 no sum or product below can overflow, and the checked
+        // operations are skipped.
+        let bits = b
+            .iter()
+            .map(|x| 128 - x.unsigned_abs().leading_zeros())
+            .max();
+        let safe = bits.unwrap_or(0) as usize + 2 * n <= 125;
+        let times = |x: i128, y: i128| if safe { Some(x * y) } else { x.checked_mul(y) };
+        let plus = |x: i128, y: i128| if safe { Some(x + y) } else { x.checked_add(y) };
+        let coeffs = (0..=n)
+            .map(|k| {
+                let mut sum = 0i128;
+                for (i, (&c, &bi)) in row(k).iter().zip(&b).enumerate() {
+                    let c = if (k - i) % 2 == 1 { -c } else { c };
+                    sum = plus(sum, times(i128::from(c), bi)?)?;
+                }
+                Some(Int::from_i128(times(sum, i128::from(row(n)[k]))?))
+            })
+            .collect::<Option<Vec<Int>>>()?;
+        Some(ZPoly::new(coeffs))
+    };
+    let mut columns = fractions.chunks_exact(count);
+    let mut numerators = Vec::with_capacity(N);
+    for column in columns.by_ref().take(N) {
+        numerators.push(power(column)?);
+    }
     Some(PolyCurve {
         numerators: numerators.try_into().ok()?,
-        denominator: power(weights)?,
+        denominator: power(columns.next()?)?,
     })
 }
 
@@ -192,18 +249,17 @@ mod tests {
         ) {
             let scale = Rat::from_int(Int::from(10).pow(13 * long));
             let count = points.len() / 3;
-            let values: [Vec<Cow<Rat>>; 3] = std::array::from_fn(|k| {
-                (0..count).map(|i| {
-                    let (n, d) = points[3 * i + k];
-                    let w = if weighted { Rat::from_frac(weights[i % 6], 7) } else { Rat::one() };
-                    Cow::Owned(&(&Rat::from_frac(n, d) * &scale) * &w)
-                }).collect()
-            });
-            let w: Vec<Cow<Rat>> = (0..count)
-                .map(|i| Cow::Owned(if weighted { Rat::from_frac(weights[i % 6], 7) } else { Rat::one() }))
-                .collect();
-            let exact = exact_poly_curve(&values, &w);
-            if let Some(small) = small_poly_curve(&values, &w) {
+            let curve = Bezier {
+                points: (0..count)
+                    .map(|i| std::array::from_fn::<_, 3, _>(|k| {
+                        let (n, d) = points[3 * i + k];
+                        &Rat::from_frac(n, d) * &scale
+                    }))
+                    .collect(),
+                weights: weighted.then(|| (0..count).map(|i| Rat::from_frac(weights[i % 6], 7)).collect()),
+            };
+            let exact = exact_poly_curve(&curve);
+            if let Some(small) = small_poly_curve(&curve) {
                 proptest::prop_assert_eq!(&small.numerators, &exact.numerators);
                 proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
             } else {
