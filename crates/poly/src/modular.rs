@@ -240,6 +240,17 @@ fn rational_candidate(monic: &[Int], modulus: &Int) -> Option<ZPoly> {
 }
 
 /// The coefficients (as limbs) modulo `f.p`, in Montgomery form.
+/// [`image`] of a polynomial whose coefficients all fit an `i64` (a
+/// scene's motions), straight from the words: `None` when one is longer.
+fn word_image(a: &ZPoly, f: &Fp) -> Option<Vec<u64>> {
+    // p < 2^62: a positive i64.
+    let p = f.p as i64;
+    a.coeffs()
+        .iter()
+        .map(|c| Some(f.enter(c.to_i64()?.rem_euclid(p) as u64)))
+        .collect()
+}
+
 fn image(limbs: &[(bool, Vec<u64>)], f: &Fp, weights: &[u64]) -> Vec<u64> {
     let mut r = vec![0u64; limbs.len()];
     reduce_all(limbs, f, weights, &mut r);
@@ -254,18 +265,20 @@ pub(crate) fn squarefree_by_prime(a: &ZPoly) -> bool {
     let Some(lc) = a.leading() else {
         return false;
     };
-    let limbs = to_limbs(a.coeffs());
     let Some(f) = (0..4)
         .map(|index| Fp::new(ntt_prime(index).p))
         .find(|f| lc.mod_u64(f.p) != 0)
     else {
         return false;
     };
-    let r = image(
-        &limbs,
-        &f,
-        &f.limb_weights(crate::ntt::max_limbs(&limbs, &[])),
-    );
+    let r = word_image(a, &f).unwrap_or_else(|| {
+        let limbs = to_limbs(a.coeffs());
+        image(
+            &limbs,
+            &f,
+            &f.limb_weights(crate::ntt::max_limbs(&limbs, &[])),
+        )
+    });
     // a′ mod p: i·a_i for i ≥ 1 (degree < p, so its top coefficient survives).
     let d: Vec<u64> = r
         .iter()
@@ -310,6 +323,17 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
     // an image is not constant: a coprime pair, the common case of a zero
     // test, is proven by one prime without them.
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
+    let usable = |f: &Fp| lca.mod_u64(f.p) != 0 && lcb.mod_u64(f.p) != 0;
+    // Short coefficients: the first usable prime's images from the words
+    // ([`word_image`]), which prove the usual coprime pair (the loop below
+    // would answer the same at that prime) without the limb conversion.
+    if let Some(f) = (0..).map(|i| Fp::new(ntt_prime(i).p)).find(usable) {
+        if let (Some(x), Some(y)) = (word_image(a, &f), word_image(b, &f)) {
+            if gcd_mod_p(x, y, &f).len() == 1 {
+                return (ZPoly::one(), 1, None);
+            }
+        }
+    }
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
     let max_limbs = crate::ntt::max_limbs(&sa, &sb);
     let until = |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
@@ -938,6 +962,38 @@ mod gcd_tests {
             } else {
                 prop_assert_eq!(got, expect);
             }
+        }
+
+        /// Word images are the limb images (coefficients anywhere in
+        /// `i64`, its ends included; none past it), and short polynomials,
+        /// whose gcd takes the word images first, have the gcd the common
+        /// factor makes.
+        #[test]
+        fn short_polynomials_take_word_images(
+            a in zpoly(6, 40),
+            b in zpoly(6, 40),
+            g in zpoly_deg(0, 3, 20),
+            end in prop_oneof![Just(i64::MIN), Just(i64::MAX), any::<i64>()],
+        ) {
+            use super::{image, ntt_prime, to_limbs, word_image, Fp};
+            let f = Fp::new(ntt_prime(0).p);
+            // a·t + end: `end` itself as the constant coefficient.
+            let extreme = &(&a * &z(&[0, 1])) + &z(&[end]);
+            let long = &(&a * &z(&[0, 1])) + &ZPoly::new(vec![Int::from(i64::MAX) + Int::one()]);
+            for p in [&a, &b, &extreme, &long] {
+                let limbs = to_limbs(p.coeffs());
+                let weights = f.limb_weights(crate::ntt::max_limbs(&limbs, &[]));
+                let words = p.coeffs().iter().all(|c| c.to_i64().is_some());
+                prop_assert_eq!(word_image(p, &f), words.then(|| image(&limbs, &f, &weights)));
+            }
+            let expect = (&g * &a.gcd(&b)).primitive_part();
+            let got = (&a * &g).gcd(&(&b * &g));
+            if a.is_zero() && b.is_zero() {
+                prop_assert!(got.is_zero());
+            } else {
+                prop_assert_eq!(got, expect);
+            }
+            prop_assert_eq!(extreme.gcd(&(&extreme + &z(&[1]))), ZPoly::one());
         }
 
         #[test]
