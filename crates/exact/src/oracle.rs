@@ -149,17 +149,23 @@ impl ExactRoot {
     }
 }
 
-/// A sample point: `f`'s coefficients there, the closed forms over `f64`
-/// intervals (a filter) and, once one of those does not exclude zero,
-/// exactly.
+/// A sample point: enclosures of `f`'s coefficients there and the closed
+/// forms over them (`f64` intervals, a filter) and, once one of those does
+/// not exclude zero, the exact coefficients and closed forms.
 struct Sample {
     at: Rat,
-    values: [Int; 5],
+    /// `f`'s coefficients at `at` up to one positive factor and a positive
+    /// rescaling of `λ` (which keep every sign Theorem 3.10 reads: the
+    /// closed forms are homogeneous and isobaric), enclosed.
+    coefficients: [Interval; 5],
     filter: QuarticInvariants<Interval>,
+    /// The exact coefficients (times a positive factor), once needed.
+    values: Option<[Int; 5]>,
     exact: Option<QuarticInvariants<Int>>,
 }
 
 impl Sample {
+    /// From the exact coefficients.
     fn new(at: Rat, values: [Int; 5]) -> Sample {
         // One common power of two (the closed forms are homogeneous) puts
         // the largest coefficient near 2^64: no overflow in products of six.
@@ -168,19 +174,40 @@ impl Sample {
             .each_ref()
             .map(|v| Interval::from_int_scaled(v, bits - 64));
         Sample {
+            values: Some(values),
+            ..Sample::enclosed(at, scaled)
+        }
+    }
+
+    /// From enclosures of the coefficients (the set-up `f`'s views,
+    /// [`Coefficients::views_at`]); the exact ones are formed only where
+    /// the enclosures do not decide.
+    fn enclosed(at: Rat, coefficients: [Interval; 5]) -> Sample {
+        Sample {
             at,
-            filter: closed_forms(&scaled),
-            values,
+            filter: closed_forms(&coefficients),
+            coefficients,
+            values: None,
             exact: None,
         }
+    }
+
+    /// The exact coefficients, formed by `values` on the first need.
+    fn values(&mut self, values: impl FnOnce() -> [Int; 5]) -> &[Int; 5] {
+        self.values.get_or_insert_with(values)
     }
 
     /// The sign of `q` here: from the enclosure when it excludes zero
     /// (proven), else `0` when `q` is proven identically zero on the span
     /// (`known_zero`: its enclosure holds that 0, and the exact closed
     /// forms would be formed only to read it), else from the exact closed
-    /// form.
-    fn sign(&mut self, q: Quantity, known_zero: impl FnOnce() -> bool) -> i32 {
+    /// form (of the exact coefficients `values` gives).
+    fn sign(
+        &mut self,
+        q: Quantity,
+        known_zero: impl FnOnce() -> bool,
+        values: impl FnOnce() -> [Int; 5],
+    ) -> i32 {
         if let Some(s) = self
             .filter
             .get(q)
@@ -192,9 +219,24 @@ impl Sample {
         if known_zero() {
             return 0;
         }
-        let values = &self.values;
-        let exact = self.exact.get_or_insert_with(|| closed_forms(values));
-        exact.get(q).map_or(0, Int::signum)
+        if self.exact.is_none() {
+            let exact = closed_forms(self.values(values));
+            self.exact = Some(exact);
+        }
+        self.exact
+            .as_ref()
+            .and_then(|e| e.get(q))
+            .map_or(0, Int::signum)
+    }
+
+    /// `Var` of the coefficients: from their enclosures when each is
+    /// signed (a point `[0, 0]` encloses exactly `0`), else exactly.
+    fn variations(&mut self, values: impl FnOnce() -> [Int; 5]) -> usize {
+        let signs: Option<Vec<i32>> = self.coefficients.iter().map(Interval::sign).collect();
+        match signs {
+            Some(signs) => sign_variations(&signs),
+            None => sign_variations(&self.values(values).each_ref().map(Int::signum)),
+        }
     }
 }
 
@@ -345,10 +387,16 @@ impl<'s> Exact<'s> {
 struct SampleSigns<'a, 's>(&'a Exact<'s>, Rat);
 
 impl SampleSigns<'_, '_> {
+    /// The sample at this point, cached: once `f` is set up, from its
+    /// views' enclosures (interval Horner, no exact evaluation unless they
+    /// do not decide), before that from the exact coefficients.
     fn with<T>(&self, read: impl FnOnce(&mut Sample) -> T) -> T {
         let mut cache = self.0.sample.borrow_mut();
         if cache.as_ref().is_none_or(|s| s.at != self.1) {
-            *cache = Some(Sample::new(self.1.clone(), self.0.values_at(&self.1)));
+            *cache = Some(match &self.0.f {
+                Some(f) => Sample::enclosed(self.1.clone(), f.views_at(&self.1)),
+                None => Sample::new(self.1.clone(), self.0.values_at(&self.1)),
+            });
         }
         read(cache.as_mut().expect("just filled"))
     }
@@ -356,10 +404,12 @@ impl SampleSigns<'_, '_> {
 
 impl Signs for SampleSigns<'_, '_> {
     fn sign(&mut self, q: Quantity) -> SignSet {
-        SignSet::exactly(self.with(|s| s.sign(q, || self.0.zero_on_span(q))))
+        SignSet::exactly(
+            self.with(|s| s.sign(q, || self.0.zero_on_span(q), || self.0.values_at(&self.1))),
+        )
     }
     fn variations(&mut self) -> VarSet {
-        VarSet::exactly(self.with(|s| sign_variations(&s.values.each_ref().map(Int::signum))))
+        VarSet::exactly(self.with(|s| s.variations(|| self.0.values_at(&self.1))))
     }
 }
 
@@ -654,20 +704,23 @@ mod tests {
 
     /// Every sign a sample answers.
     fn sample_signs(at: &Rat, values: [Int; 5]) -> Vec<i32> {
-        let mut s = Sample::new(at.clone(), values);
-        let mut out: Vec<i32> = [
-            Quantity::Sr22,
-            Quantity::Sr20,
-            Quantity::Sr11,
-            Quantity::Sr10,
-            Quantity::Sr0,
-        ]
-        .into_iter()
-        .map(|q| s.sign(q, || false))
-        .collect();
-        out.extend(s.values.iter().map(Int::signum));
+        let mut s = Sample::new(at.clone(), values.clone());
+        let mut out: Vec<i32> = QUANTITIES
+            .into_iter()
+            .map(|q| s.sign(q, || false, || unreachable!("given")))
+            .collect();
+        out.extend(values.iter().map(Int::signum));
         out
     }
+
+    /// The closed forms a sample answers.
+    const QUANTITIES: [Quantity; 5] = [
+        Quantity::Sr22,
+        Quantity::Sr20,
+        Quantity::Sr11,
+        Quantity::Sr10,
+        Quantity::Sr0,
+    ];
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
@@ -718,9 +771,22 @@ mod tests {
             let (pa, pb) = (placed_quadric(&a, &span).unwrap(), placed_quadric(&b, &span).unwrap());
             let f = CharPoly::from_placed(&pa, &pb);
             let u = Rat::from_frac(at.0.min(at.1), at.1);
+            let coefficients = Coefficients::new(f.clone());
             for u in [Rat::zero(), Rat::one(), u] {
                 let direct = characteristic(&pa.quadric_at(&u), &pb.quadric_at(&u));
-                proptest::prop_assert_eq!(sample_signs(&u, direct), sample_signs(&u, f.at_scaled(&u)), "at {}", u);
+                let exact = f.at_scaled(&u);
+                proptest::prop_assert_eq!(sample_signs(&u, direct), sample_signs(&u, exact.clone()), "at {}", u);
+                // The set-up f's views (a sample after `prepare`) give the
+                // same signs and the same Var, exactly where they do not
+                // decide.
+                let mut by_views = Sample::enclosed(u.clone(), coefficients.views_at(&u));
+                let mut by_values = Sample::new(u.clone(), exact.clone());
+                for q in QUANTITIES {
+                    let want = by_values.sign(q, || false, || unreachable!("given"));
+                    proptest::prop_assert_eq!(by_views.sign(q, || false, || exact.clone()), want, "{:?} at {}", q, u);
+                }
+                let want = by_values.variations(|| unreachable!("given"));
+                proptest::prop_assert_eq!(by_views.variations(|| exact.clone()), want, "Var at {}", u);
             }
         }
     }
@@ -1049,7 +1115,7 @@ mod tests {
                 let mut sample = Sample::new(Rat::zero(), v.clone());
                 for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
                     let want = exact.get(q).map_or(0, Int::signum);
-                    proptest::prop_assert_eq!(sample.sign(q, || false), want, "{:?} of {:?}", q, v);
+                    proptest::prop_assert_eq!(sample.sign(q, || false, || unreachable!("given")), want, "{:?} of {:?}", q, v);
                 }
             }
         }

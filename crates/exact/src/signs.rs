@@ -126,6 +126,14 @@ impl Coefficients {
         }
     }
 
+    /// Enclosures of the views `f_k·2^(tilt·(4 − k) − shift)` at `u`
+    /// (interval Horner at `u`'s enclosure): `f`'s coefficients there up to
+    /// one positive factor and a positive rescaling of `λ`, which keep
+    /// every sign Theorem 3.10 reads.
+    pub(crate) fn views_at(&self, u: &Rat) -> [Interval; 5] {
+        ScaledPoly::enclose_each(self.views.each_ref(), Interval::from_rat(u))
+    }
+
     /// The closed form `q` (not [`Quantity::Var`]) as a polynomial, formed
     /// once, with only the products it needs: in `i128` ([`SmallPoly`],
     /// which detects any overflow) when short inputs make its numbers
