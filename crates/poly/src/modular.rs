@@ -327,11 +327,15 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
     // Short coefficients: the first usable prime's images from the words
     // ([`word_image`]), which prove the usual coprime pair (the loop below
     // would answer the same at that prime) without the limb conversion.
-    if let Some(f) = (0..).map(|i| Fp::new(ntt_prime(i).p)).find(usable) {
-        if let (Some(x), Some(y)) = (word_image(a, &f), word_image(b, &f)) {
-            if gcd_mod_p(x, y, &f).len() == 1 {
-                return (ZPoly::one(), 1, None);
-            }
+    let words = |p: &ZPoly| p.coeffs().iter().all(|c| c.to_i64().is_some());
+    if words(a) && words(b) {
+        let f = (0..)
+            .map(|i| Fp::new(ntt_prime(i).p))
+            .find(usable)
+            .expect("a prime divides neither leading coefficient");
+        let image = |p: &ZPoly| word_image(p, &f).expect("words");
+        if gcd_mod_p(image(a), image(b), &f).len() == 1 {
+            return (ZPoly::one(), 1, None);
         }
     }
     let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
