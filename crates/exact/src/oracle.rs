@@ -777,8 +777,8 @@ mod tests {
                 let exact = f.at_scaled(&u);
                 proptest::prop_assert_eq!(sample_signs(&u, direct), sample_signs(&u, exact.clone()), "at {}", u);
                 // The set-up f's views (a sample after `prepare`) give the
-                // same signs and the same Var, exactly where they do not
-                // decide.
+                // same signs and the same Var (with the exact values to
+                // fall back on where their enclosures do not decide).
                 let mut by_views = Sample::enclosed(u.clone(), coefficients.views_at(&u));
                 let mut by_values = Sample::new(u.clone(), exact.clone());
                 for q in QUANTITIES {

@@ -95,9 +95,10 @@ pub struct PolyCurve<const N: usize> {
 /// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`): with `L`
 /// the lcm of the denominators of every `wᵢ·Pᵢ` and `wᵢ`, numerator `k` is
 /// `Σ Bᵢⁿ(u)·(L·wᵢ·Pᵢ[k])` and the denominator `Σ Bᵢⁿ(u)·(L·wᵢ)`, both in
-/// ℤ[u] (no rational arithmetic). In `i128` ([`SmallInt`]) when every
-/// number on the way fits, else over [`Int`] ([`bernstein_to_power`]):
-/// the same polynomials.
+/// ℤ[u] (no rational arithmetic). In `i128` when every value and weight
+/// is a fraction of `i64` words and every number on the way fits
+/// ([`small_poly_curve`]), else over [`Int`] ([`bernstein_to_power`]): the
+/// same polynomials.
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
     small_poly_curve(curve).unwrap_or_else(|| exact_poly_curve(curve))
 }
@@ -148,11 +149,17 @@ fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurv
     // Column k < N holds the values wᵢ·Pᵢ[k], column N the weights.
     let mut fractions: Vec<(i128, i64)> = Vec::with_capacity((N + 1) * count);
     for k in 0..N {
-        for (i, p) in curve.points.iter().enumerate() {
-            fractions.push(match &curve.weights {
-                Some(w) => word(&(&p[k] * &w[i]))?,
-                None => word(&p[k])?,
-            });
+        match &curve.weights {
+            Some(w) => {
+                for (p, w) in curve.points.iter().zip(w) {
+                    fractions.push(word(&(&p[k] * w))?);
+                }
+            }
+            None => {
+                for p in &curve.points {
+                    fractions.push(word(&p[k])?);
+                }
+            }
         }
     }
     match &curve.weights {
@@ -236,6 +243,7 @@ fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurv
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::any;
 
     proptest::proptest! {
         /// The `i128` route gives the `Int` route's polynomials, and
@@ -264,6 +272,32 @@ mod tests {
                 proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
             } else {
                 proptest::prop_assert!(long > 0, "short numbers fit");
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Past the bound that skips the checks (`bits + 2n > 125`): long
+        /// words and degrees up to 60, where sums overflow `i128` or come
+        /// close. The `i128` route gives the `Int` route's polynomials or
+        /// declines; it never returns wrapped numbers.
+        #[test]
+        fn checked_route_is_the_exact_route_or_declines(
+            numerators in proptest::collection::vec(any::<i64>(), 2..62),
+            denominators in proptest::collection::vec(1i64..4, 62),
+        ) {
+            let curve = Bezier {
+                points: numerators
+                    .iter()
+                    .zip(&denominators)
+                    .map(|(&n, &d)| [Rat::from_frac(n, d)])
+                    .collect(),
+                weights: None,
+            };
+            let exact = exact_poly_curve(&curve);
+            if let Some(small) = small_poly_curve(&curve) {
+                proptest::prop_assert_eq!(&small.numerators, &exact.numerators);
+                proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
             }
         }
     }

@@ -239,9 +239,9 @@ fn rational_candidate(monic: &[Int], modulus: &Int) -> Option<ZPoly> {
     Some(ZPoly::new(nums).primitive_part())
 }
 
-/// The coefficients (as limbs) modulo `f.p`, in Montgomery form.
 /// [`image`] of a polynomial whose coefficients all fit an `i64` (a
-/// scene's motions), straight from the words: `None` when one is longer.
+/// scene's motions), straight from the words (`enter` gives the canonical
+/// residue, so the same values): `None` when one is longer.
 fn word_image(a: &ZPoly, f: &Fp) -> Option<Vec<u64>> {
     // p < 2^62: a positive i64.
     let p = f.p as i64;
@@ -251,6 +251,7 @@ fn word_image(a: &ZPoly, f: &Fp) -> Option<Vec<u64>> {
         .collect()
 }
 
+/// The coefficients (as limbs) modulo `f.p`, in Montgomery form.
 fn image(limbs: &[(bool, Vec<u64>)], f: &Fp, weights: &[u64]) -> Vec<u64> {
     let mut r = vec![0u64; limbs.len()];
     reduce_all(limbs, f, weights, &mut r);
