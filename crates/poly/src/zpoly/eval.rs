@@ -26,6 +26,18 @@ fn hom_horner_impl<const DERIVATIVE: bool>(c: &[Int], x: &Int, y: &Int) -> (Int,
     let Some((last, rest)) = c.split_last() else {
         return (Int::zero(), Int::zero());
     };
+    if x.is_zero() {
+        // At 0 (the start of the span): `c_0·y^n` and `c_1·y^(n−1)`, the
+        // only terms without a factor `x`, with no Horner pass.
+        let n = rest.len() as u32;
+        let power = |e: u32| if y.is_one() { Int::one() } else { y.pow(e) };
+        let value = &c[0] * &power(n);
+        let slope = match (DERIVATIVE, c.get(1)) {
+            (true, Some(c1)) => c1 * &power(n - 1),
+            _ => Int::zero(),
+        };
+        return (value, slope);
+    }
     let mut acc = last.clone();
     let mut dacc = Int::zero();
     // acc ← acc·x + term, with `add` adding the term in place (and the
@@ -213,6 +225,22 @@ mod tests {
             if !q.admits_rational_root(&x) {
                 prop_assert!(q.sign_at(&x) != 0);
             }
+        }
+
+        /// At 0 (no Horner pass): the sums `Σ c_i·0^i·y^(n−i)` and
+        /// `Σ i·c_i·0^(i−1)·y^(n−i)` term by term, for any `y` (reduced
+        /// `0/y` or not).
+        #[test]
+        fn homogeneous_values_at_zero(p in zpoly(9, 60), y in 1i64..300) {
+            let (zero, y) = (Int::zero(), Int::from(y));
+            let n = p.coeffs().len().saturating_sub(1) as u32;
+            let term = |i: u32, e: u32, c: &Int| c * &zero.pow(e) * y.pow(n - i);
+            let value: Int = p.coeffs().iter().enumerate().map(|(i, c)| term(i as u32, i as u32, c)).fold(Int::zero(), |a, b| &a + &b);
+            let slope: Int = p.coeffs().iter().enumerate().skip(1)
+                .map(|(i, c)| term(i as u32, i as u32 - 1, &(c * &Int::from(i as i64))))
+                .fold(Int::zero(), |a, b| &a + &b);
+            prop_assert_eq!(hom_horner_with_derivative(p.coeffs(), &zero, &y), (value.clone(), slope));
+            prop_assert_eq!(hom_horner(p.coeffs(), &zero, &y), value);
         }
 
         /// One pass gives the homogeneous value and the homogeneous value of
