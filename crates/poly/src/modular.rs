@@ -85,11 +85,17 @@ pub(crate) fn gcd_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, f: &Fp) -> Vec<u64> {
         rem_in_place(&mut a, &b, f);
         std::mem::swap(&mut a, &mut b);
     }
-    if let Some(&lc) = a.last() {
-        let inv = f.inv(lc);
-        for x in a.iter_mut() {
-            *x = f.mul(*x, inv);
+    match a[..] {
+        // A constant gcd (a coprime pair, the usual answer) is monic 1:
+        // no inverse (an exponentiation) to find that.
+        [_] => a[0] = f.enter(1),
+        [.., lc] => {
+            let inv = f.inv(lc);
+            for x in a.iter_mut() {
+                *x = f.mul(*x, inv);
+            }
         }
+        [] => {}
     }
     a
 }
