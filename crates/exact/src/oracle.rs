@@ -192,11 +192,6 @@ impl Sample {
         }
     }
 
-    /// The exact coefficients, formed by `values` on the first need.
-    fn values(&mut self, values: impl FnOnce() -> [Int; 5]) -> &[Int; 5] {
-        self.values.get_or_insert_with(values)
-    }
-
     /// The sign of `q` here: from the enclosure when it excludes zero
     /// (proven), else `0` when `q` is proven identically zero on the span
     /// (`known_zero`: its enclosure holds that 0, and the exact closed
@@ -219,14 +214,11 @@ impl Sample {
         if known_zero() {
             return 0;
         }
-        if self.exact.is_none() {
-            let exact = closed_forms(self.values(values));
-            self.exact = Some(exact);
-        }
-        self.exact
-            .as_ref()
-            .and_then(|e| e.get(q))
-            .map_or(0, Int::signum)
+        let Sample {
+            values: v, exact, ..
+        } = self;
+        let exact = exact.get_or_insert_with(|| closed_forms(v.get_or_insert_with(values)));
+        exact.get(q).map_or(0, Int::signum)
     }
 
     /// `Var` of the coefficients: from their enclosures when each is
@@ -235,7 +227,13 @@ impl Sample {
         let signs: Option<Vec<i32>> = self.coefficients.iter().map(Interval::sign).collect();
         match signs {
             Some(signs) => sign_variations(&signs),
-            None => sign_variations(&self.values(values).each_ref().map(Int::signum)),
+            None => sign_variations(
+                &self
+                    .values
+                    .get_or_insert_with(values)
+                    .each_ref()
+                    .map(Int::signum),
+            ),
         }
     }
 }
@@ -894,13 +892,7 @@ mod tests {
         let scene = passing_through(true);
         let mut o = Exact::new(&scene, 12).expect("a translation");
         o.prepare().expect("short numbers");
-        let quantities = [
-            Quantity::Sr22,
-            Quantity::Sr20,
-            Quantity::Sr11,
-            Quantity::Sr10,
-            Quantity::Sr0,
-        ];
+        let quantities = QUANTITIES;
         for (i, x) in [1, 2, 5, 9]
             .map(|k| Rat::from_frac(k, 10))
             .iter()
@@ -1113,7 +1105,7 @@ mod tests {
                 }
                 let exact = closed_forms(&v);
                 let mut sample = Sample::new(Rat::zero(), v.clone());
-                for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                for q in QUANTITIES {
                     let want = exact.get(q).map_or(0, Int::signum);
                     proptest::prop_assert_eq!(sample.sign(q, || false, || unreachable!("given")), want, "{:?} of {:?}", q, v);
                 }

@@ -95,37 +95,56 @@ pub struct PolyCurve<const N: usize> {
 /// Converts a Bézier curve of `N`-vectors (points as `[Rat; N]`): with `L`
 /// the lcm of the denominators of every `wᵢ·Pᵢ` and `wᵢ`, numerator `k` is
 /// `Σ Bᵢⁿ(u)·(L·wᵢ·Pᵢ[k])` and the denominator `Σ Bᵢⁿ(u)·(L·wᵢ)`, both in
-/// ℤ[u] (no rational arithmetic). In `i128` when every value and weight
-/// is a fraction of `i64` words and every number on the way fits
-/// ([`small_poly_curve`]), else over [`Int`] ([`bernstein_to_power`]): the
-/// same polynomials.
+/// ℤ[u] (no rational arithmetic). In `i128` when every number on the way
+/// fits ([`small_poly_curve`]), else over [`Int`] ([`bernstein_to_power`]):
+/// the same polynomials.
 pub fn to_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
-    small_poly_curve(curve).unwrap_or_else(|| exact_poly_curve(curve))
+    let one = Rat::one();
+    let columns = weighted_columns(curve, &one);
+    let count = curve.points.len();
+    small_poly_curve::<N>(&columns, count).unwrap_or_else(|| exact_poly_curve(&columns, count))
 }
 
-/// [`to_poly_curve`] over [`Int`].
-fn exact_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
-    // Borrowed where no product is needed (no weights).
-    let one = Rat::one();
-    let weights: Vec<Cow<Rat>> = match &curve.weights {
-        Some(w) => w.iter().map(Cow::Borrowed).collect(),
-        None => vec![Cow::Borrowed(&one); curve.points.len()],
+/// The values `wᵢ·Pᵢ[k]` column after column (`k < N`), then the weights
+/// `wᵢ` (column `N`), in one buffer; borrowed where no product is needed
+/// (no weights).
+fn weighted_columns<'a, const N: usize>(
+    curve: &'a Bezier<[Rat; N]>,
+    one: &'a Rat,
+) -> Vec<Cow<'a, Rat>> {
+    let count = curve.points.len();
+    let mut columns = Vec::with_capacity((N + 1) * count);
+    for k in 0..N {
+        match &curve.weights {
+            Some(w) => columns.extend(
+                curve
+                    .points
+                    .iter()
+                    .zip(w)
+                    .map(|(p, w)| Cow::Owned(&p[k] * w)),
+            ),
+            None => columns.extend(curve.points.iter().map(|p| Cow::Borrowed(&p[k]))),
+        }
+    }
+    match &curve.weights {
+        Some(w) => columns.extend(w.iter().map(Cow::Borrowed)),
+        None => columns.extend(std::iter::repeat_n(Cow::Borrowed(one), count)),
+    }
+    columns
+}
+
+/// [`to_poly_curve`] over [`Int`], from [`weighted_columns`] (`count`
+/// points).
+fn exact_poly_curve<const N: usize>(columns: &[Cow<Rat>], count: usize) -> PolyCurve<N> {
+    let den: Int = common_denominator(columns.iter().map(|x| &**x));
+    let power = |column: &[Cow<Rat>]| -> ZPoly {
+        let scaled: Vec<Int> = column.iter().map(|x| times_denominator(x, &den)).collect();
+        bernstein_to_power(&scaled)
     };
-    let values: [Vec<Cow<Rat>>; N] = std::array::from_fn(|k| match &curve.weights {
-        Some(w) => curve
-            .points
-            .iter()
-            .zip(w)
-            .map(|(p, w)| Cow::Owned(&p[k] * w))
-            .collect(),
-        None => curve.points.iter().map(|p| Cow::Borrowed(&p[k])).collect(),
-    });
-    let den: Int = common_denominator(values.iter().flatten().chain(&weights).map(|x| &**x));
-    let scaled =
-        |v: &[Cow<Rat>]| -> Vec<Int> { v.iter().map(|x| times_denominator(x, &den)).collect() };
+    let column = |k: usize| &columns[k * count..][..count];
     PolyCurve {
-        numerators: values.each_ref().map(|v| bernstein_to_power(&scaled(v))),
-        denominator: bernstein_to_power(&scaled(&weights)),
+        numerators: std::array::from_fn(|k| power(column(k))),
+        denominator: power(column(N)),
     }
 }
 
@@ -133,52 +152,18 @@ fn exact_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> PolyCurve<N> {
 /// `C(k, i)`, `k ≤ 60`, fits an `i64`).
 const SMALL_CURVE_DEGREE: usize = 60;
 
-/// [`to_poly_curve`] in `i128` (checked: `None` if a number on the way does
-/// not fit, or a value is not a fraction of machine words): the values
-/// `wᵢ·Pᵢ[k]` and weights `wᵢ` as reduced word fractions in one buffer,
-/// their lcm `L`, and per coordinate `Σ bᵢ·Bᵢⁿ(u) = Σ_k C(n, k)·(Σ_(i≤k)
-/// (−1)^(k−i)·C(k, i)·bᵢ)·u^k` for `bᵢ = L·valueᵢ`, the binomials formed
-/// along the way. No allocation but the buffer and the polynomials.
-fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurve<N>> {
-    let count = curve.points.len();
+/// [`to_poly_curve`] in `i128` from [`weighted_columns`] (`count` points;
+/// checked: `None` if a number on the way does not fit): `bᵢ = L·valueᵢ`
+/// for the lcm `L` of the denominators ([`SmallInt`]), and per column
+/// `Σ bᵢ·Bᵢⁿ(u) = Σ_k C(n, k)·(Σ_(i≤k) (−1)^(k−i)·C(k, i)·bᵢ)·u^k`, the
+/// binomials by Pascal's rule (no division).
+fn small_poly_curve<const N: usize>(columns: &[Cow<Rat>], count: usize) -> Option<PolyCurve<N>> {
     let n = count.checked_sub(1)?;
     if n > SMALL_CURVE_DEGREE {
         return None;
     }
-    let word = |x: &Rat| Some((i128::from(x.numer().to_i64()?), x.denom().to_i64()?));
-    // Column k < N holds the values wᵢ·Pᵢ[k], column N the weights.
-    let mut fractions: Vec<(i128, i64)> = Vec::with_capacity((N + 1) * count);
-    for k in 0..N {
-        match &curve.weights {
-            Some(w) => {
-                for (p, w) in curve.points.iter().zip(w) {
-                    fractions.push(word(&(&p[k] * w))?);
-                }
-            }
-            None => {
-                for p in &curve.points {
-                    fractions.push(word(&p[k])?);
-                }
-            }
-        }
-    }
-    match &curve.weights {
-        Some(w) => {
-            for x in w {
-                fractions.push(word(x)?);
-            }
-        }
-        None => fractions.extend(std::iter::repeat_n((1, 1), count)),
-    }
-    // The lcm of the (positive) denominators.
-    let mut den: i128 = 1;
-    for &(_, d) in &fractions {
-        let d = i128::from(d);
-        if d != 1 && d != den {
-            let g = ccd_arith::gcd_u128(den as u128, d as u128) as i128;
-            den = (den / g).checked_mul(d)?;
-        }
-    }
+    let den: SmallInt = common_denominator(columns.iter().map(|x| &**x));
+    den.to_i128()?;
     // The binomial rows C(k, ·) for k ≤ n, by Pascal's rule in one flat
     // buffer (row k at offset k(k + 1)/2): additions, no division.
     let mut pascal: Vec<i64> = Vec::with_capacity((n + 1) * (n + 2) / 2);
@@ -194,18 +179,12 @@ fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurv
         }
     }
     let row = |k: usize| &pascal[k * (k + 1) / 2..][..=k];
-    // L/d in machine words when L fits one (a division instruction, not
-    // the 128-bit library call).
-    let cofactor = |d: i64| match i64::try_from(den) {
-        Ok(l) => i128::from(l / d),
-        Err(_) => den / i128::from(d),
-    };
     // One buffer for every column's bᵢ.
     let mut b: Vec<i128> = Vec::with_capacity(count);
-    let mut power = |column: &[(i128, i64)]| -> Option<ZPoly> {
+    let mut power = |column: &[Cow<Rat>]| -> Option<ZPoly> {
         b.clear();
-        for &(x, d) in column {
-            b.push(x.checked_mul(cofactor(d))?);
+        for x in column {
+            b.push(times_denominator(x, &den).to_i128()?);
         }
         // Σ_(i≤k) C(k, i)·|bᵢ| ≤ 2^k·max|bᵢ| and C(n, k) ≤ 2^n: within
         // 2^125 no sum or product below can overflow, and the checked
@@ -229,7 +208,7 @@ fn small_poly_curve<const N: usize>(curve: &Bezier<[Rat; N]>) -> Option<PolyCurv
             .collect::<Option<Vec<Int>>>()?;
         Some(ZPoly::new(coeffs))
     };
-    let mut columns = fractions.chunks_exact(count);
+    let mut columns = columns.chunks_exact(count);
     let mut numerators = Vec::with_capacity(N);
     for column in columns.by_ref().take(N) {
         numerators.push(power(column)?);
@@ -266,14 +245,26 @@ mod tests {
                     .collect(),
                 weights: weighted.then(|| (0..count).map(|i| Rat::from_frac(weights[i % 6], 7)).collect()),
             };
-            let exact = exact_poly_curve(&curve);
-            if let Some(small) = small_poly_curve(&curve) {
+            let (small, exact) = routes(&curve);
+            if let Some(small) = small {
                 proptest::prop_assert_eq!(&small.numerators, &exact.numerators);
                 proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
             } else {
                 proptest::prop_assert!(long > 0, "short numbers fit");
             }
         }
+    }
+
+    /// Both routes on one curve: the `i128` one (`None` where it declines)
+    /// and the `Int` one.
+    fn routes<const N: usize>(curve: &Bezier<[Rat; N]>) -> (Option<PolyCurve<N>>, PolyCurve<N>) {
+        let one = Rat::one();
+        let columns = weighted_columns(curve, &one);
+        let count = curve.points.len();
+        (
+            small_poly_curve(&columns, count),
+            exact_poly_curve(&columns, count),
+        )
     }
 
     proptest::proptest! {
@@ -294,8 +285,8 @@ mod tests {
                     .collect(),
                 weights: None,
             };
-            let exact = exact_poly_curve(&curve);
-            if let Some(small) = small_poly_curve(&curve) {
+            let (small, exact) = routes(&curve);
+            if let Some(small) = small {
                 proptest::prop_assert_eq!(&small.numerators, &exact.numerators);
                 proptest::prop_assert_eq!(&small.denominator, &exact.denominator);
             }

@@ -264,6 +264,43 @@ fn image(limbs: &[(bool, Vec<u64>)], f: &Fp, weights: &[u64]) -> Vec<u64> {
     r.into_iter().map(|x| f.enter(x)).collect()
 }
 
+/// A polynomial's coefficients ready for their images modulo word primes:
+/// the coefficients themselves when each fits an `i64` (a scene's
+/// motions: [`word_image`], one remainder each), else their limbs
+/// ([`image`]).
+enum Source<'a> {
+    Words(&'a ZPoly),
+    Limbs(Vec<(bool, Vec<u64>)>),
+}
+
+impl<'a> Source<'a> {
+    fn new(a: &'a ZPoly) -> Source<'a> {
+        if a.coeffs().iter().all(|c| c.to_i64().is_some()) {
+            Source::Words(a)
+        } else {
+            Source::Limbs(to_limbs(a.coeffs()))
+        }
+    }
+
+    /// The limbs [`Source::image`]'s weights must cover: the most limbs of
+    /// a coefficient, none for words (no weights formed).
+    fn limbs(&self) -> usize {
+        match self {
+            Source::Words(_) => 0,
+            Source::Limbs(limbs) => crate::ntt::max_limbs(limbs, &[]),
+        }
+    }
+
+    /// The coefficients modulo `f.p`, in Montgomery form (`weights` from
+    /// [`Fp::limb_weights`] for at least [`Source::limbs`] limbs).
+    fn image(&self, f: &Fp, weights: &[u64]) -> Vec<u64> {
+        match self {
+            Source::Words(a) => word_image(a, f).expect("every coefficient a word"),
+            Source::Limbs(limbs) => image(limbs, f, weights),
+        }
+    }
+}
+
 /// Whether `a` (degree ≥ 1) is proven squarefree by one word prime `p ∤ lc(a)`:
 /// a repeated factor `g²` of `a` over ℚ reduces to one of `a mod p` (of the
 /// same degree), so `gcd(a mod p, a′ mod p) = 1` rules it out. `false`
@@ -278,14 +315,8 @@ pub(crate) fn squarefree_by_prime(a: &ZPoly) -> bool {
     else {
         return false;
     };
-    let r = word_image(a, &f).unwrap_or_else(|| {
-        let limbs = to_limbs(a.coeffs());
-        image(
-            &limbs,
-            &f,
-            &f.limb_weights(crate::ntt::max_limbs(&limbs, &[])),
-        )
-    });
+    let source = Source::new(a);
+    let r = source.image(&f, &f.limb_weights(source.limbs()));
     // a′ mod p: i·a_i for i ≥ 1 (degree < p, so its top coefficient survives).
     let d: Vec<u64> = r
         .iter()
@@ -330,23 +361,12 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
     // an image is not constant: a coprime pair, the common case of a zero
     // test, is proven by one prime without them.
     let (lca, lcb) = (a.leading().expect("nonzero"), b.leading().expect("nonzero"));
-    let usable = |f: &Fp| lca.mod_u64(f.p) != 0 && lcb.mod_u64(f.p) != 0;
-    // Short coefficients: the first usable prime's images from the words
-    // ([`word_image`]), which prove the usual coprime pair (the loop below
-    // would answer the same at that prime) without the limb conversion.
-    let words = |p: &ZPoly| p.coeffs().iter().all(|c| c.to_i64().is_some());
-    if words(a) && words(b) {
-        let f = (0..)
-            .map(|i| Fp::new(ntt_prime(i).p))
-            .find(usable)
-            .expect("a prime divides neither leading coefficient");
-        let image = |p: &ZPoly| word_image(p, &f).expect("words");
-        if gcd_mod_p(image(a), image(b), &f).len() == 1 {
-            return (ZPoly::one(), 1, None);
-        }
-    }
-    let (sa, sb) = (to_limbs(a.coeffs()), to_limbs(b.coeffs()));
-    let max_limbs = crate::ntt::max_limbs(&sa, &sb);
+    // Short coefficients (a scene's motions) give their images from the
+    // words, without the limb conversion ([`Source`]).
+    let (sa, sb) = (Source::new(a), Source::new(b));
+    let weight_limbs = sa.limbs().max(sb.limbs());
+    // The longest coefficient in words (a word coefficient is one).
+    let max_limbs = weight_limbs.max(1);
     let until = |gamma: &Int| rational_until(gamma.bits(), max_limbs as u64 * (da + db + 2) as u64);
     let mut primitive: Option<Oriented> = None;
     // The images of the lowest degree seen, lifted both ways.
@@ -357,8 +377,8 @@ fn gcd_given(a: &ZPoly, b: &ZPoly, a_primitive: bool) -> (ZPoly, usize, Option<Z
         if lca.mod_u64(f.p) == 0 || lcb.mod_u64(f.p) == 0 {
             continue;
         }
-        let weights = f.limb_weights(max_limbs);
-        let g = gcd_mod_p(image(&sa, &f, &weights), image(&sb, &f, &weights), &f);
+        let weights = f.limb_weights(weight_limbs);
+        let g = gcd_mod_p(sa.image(&f, &weights), sb.image(&f, &weights), &f);
         used += 1;
         let d = g.len() - 1;
         if d == 0 {
