@@ -449,6 +449,58 @@ mod tests {
             prop_assert_eq!(det4(&m), det_perm(&m));
         }
 
+        /// Interval quadric algebra over axis-aligned ellipsoids (structural
+        /// zeros, and centres with zero coordinates): `congruence` and
+        /// `characteristic` enclose the exact rational results, and no
+        /// bound is subnormal (a zero stays exact, as the ring operations
+        /// of `Interval` keep it; `±2^−1074` would make every later
+        /// product with it a microcode assist).
+        #[test]
+        fn interval_quadrics_enclose_and_keep_zeros(
+            axes in proptest::array::uniform6(1i64..20),
+            centres in proptest::array::uniform6(prop_oneof![Just(0i64), -5i64..6]),
+        ) {
+            use ccd_arith::{Interval, Rat};
+            let quadric = |r: &[i64], c: &[i64]| -> (Mat4<Rat>, Mat4<Interval>) {
+                let n: Mat4<Rat> = std::array::from_fn(|i| std::array::from_fn(|j| {
+                    if i == j { Rat::one() } else if j == 3 && i < 3 { Rat::from(-c[i]) } else { Rat::zero() }
+                }));
+                let d: [Rat; 4] = std::array::from_fn(|k| if k < 3 { Rat::from_frac(1, r[k] * r[k]) } else { -Rat::one() });
+                let iv = |m: &Mat4<Rat>| m.clone().map(|row| row.map(|x| Interval::from_rat(&x)));
+                (congruence(&n, &d), congruence(&iv(&n), &d.clone().map(|x| Interval::from_rat(&x))))
+            };
+            let (ea, ia) = quadric(&axes[..3], &centres[..3]);
+            let (eb, ib) = quadric(&axes[3..], &centres[3..]);
+            let holds = |iv: &Interval, x: &Rat| {
+                iv.lo.is_finite() && iv.hi.is_finite()
+                    && Rat::from_f64_exact(iv.lo).unwrap() <= *x && *x <= Rat::from_f64_exact(iv.hi).unwrap()
+            };
+            let normal = |iv: &Interval| [iv.lo, iv.hi].iter().all(|&v| v == 0.0 || v.abs() >= f64::MIN_POSITIVE);
+            for (e, i) in [(&ea, &ia), (&eb, &ib)] {
+                for (er, ir) in e.iter().zip(i) {
+                    for (x, iv) in er.iter().zip(ir) {
+                        prop_assert!(holds(iv, x) && normal(iv), "{:?} against {}", iv, x);
+                    }
+                }
+            }
+            // The 2×2 minors `characteristic` forms, and the sums of the
+            // mixed ones (most of them exactly zero here).
+            for r in 0..3 {
+                for (i, j) in COLUMN_PAIRS.iter().filter(|&&(_, j)| j < 4).copied() {
+                    let minor = |x: &Mat4<Rat>, y: &Mat4<Rat>| mixed_minor2(x, y, r, i, j);
+                    let iminor = |x: &Mat4<Interval>, y: &Mat4<Interval>| mixed_minor2(x, y, r, i, j);
+                    let exact = [minor(&ea, &eb), minor(&eb, &ea), minor(&ea, &eb).plus(&minor(&eb, &ea))];
+                    let enclosed = [iminor(&ia, &ib), iminor(&ib, &ia), iminor(&ia, &ib).plus(&iminor(&ib, &ia))];
+                    for (x, iv) in exact.iter().zip(&enclosed) {
+                        prop_assert!(holds(iv, x) && normal(iv), "{:?} against {}", iv, x);
+                    }
+                }
+            }
+            for (x, iv) in characteristic(&ea, &eb).iter().zip(&characteristic(&ia, &ib)) {
+                prop_assert!(holds(iv, x) && normal(iv), "{:?} against {}", iv, x);
+            }
+        }
+
         #[test]
         fn characteristic_matches_determinants(va in proptest::collection::vec(-9i64..10, 16), vb in proptest::collection::vec(-9i64..10, 16), l in -20i64..20) {
             let (a, b) = (mat(&va), mat(&vb));
