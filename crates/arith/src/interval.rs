@@ -4,7 +4,11 @@
 //! Every operation returns an interval that contains the exact result of the
 //! operation applied to any points of the operands: the float result
 //! (rounded to nearest) is widened by one ulp on each side, which is enough
-//! since round-to-nearest is off by at most half an ulp.
+//! since round-to-nearest is off by at most half an ulp. The ring
+//! operations ([`RingOps`](crate::RingOps)) leave exact results unwidened:
+//! a sum with the exact zero or below `2^−1022`, a product or quotient of
+//! the exact zero ([`Interval::sum_keeping_zeros`]); so does
+//! [`Interval::from_rat`] for an integer of `f64`.
 
 use crate::{Int, Rat};
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -462,6 +466,9 @@ impl crate::RingOps for Interval {
         -*self
     }
     fn div_small(&self, k: i64) -> Self {
+        if self.is_zero_point() {
+            return *self; // exact
+        }
         let d = Interval::from_i64(k.abs());
         let q = self.div_positive(d);
         if k < 0 {
@@ -502,6 +509,10 @@ mod tests {
             acc.add_product(&other, &zero, true);
             assert_eq!(acc, p);
         }
+        let minus_zero = Interval::point(-0.0);
+        assert_eq!(minus_zero.plus(&p), p);
+        assert_eq!(x.times(&minus_zero), zero);
+        assert_eq!(zero.div_small(-3), zero);
         // The operators widen by one step, as before.
         assert_eq!((zero + zero).hi, f64::from_bits(1));
         assert_eq!((zero * x).lo, -f64::from_bits(1));
@@ -562,6 +573,7 @@ mod tests {
             ends in proptest::array::uniform4(prop_oneof![
                 Just(0.0), Just(-0.0), Just(f64::INFINITY), Just(f64::NEG_INFINITY),
                 Just(f64::MIN_POSITIVE), Just(-f64::MIN_POSITIVE), Just(5e-324), Just(-5e-324),
+                Just(f64::MAX), Just(-f64::MAX),
                 (1u64..1 << 54).prop_map(f64::from_bits),
                 (1u64..1 << 54).prop_map(|b| -f64::from_bits(b)),
                 -1e-300f64..1e-300, -1e3f64..1e3,
@@ -594,6 +606,29 @@ mod tests {
                     prop_assert_eq!((kept.lo, kept.hi), (0.0, 0.0));
                 }
             }
+        }
+
+        /// `add_product` is `plus`/`minus` of `times`, bit for bit, for
+        /// every kind of factor: zero points of both signs, intervals with
+        /// a zero end, subnormal, huge and unbounded ends.
+        #[test]
+        fn add_product_is_the_sum_of_the_product(
+            ends in proptest::array::uniform6(prop_oneof![
+                Just(0.0), Just(-0.0), Just(f64::INFINITY), Just(f64::NEG_INFINITY),
+                Just(f64::MAX), Just(5e-324), Just(-5e-324),
+                -1e3f64..1e3, -1e-300f64..1e-300,
+            ]),
+            negate in any::<bool>(),
+        ) {
+            use crate::RingOps;
+            let interval = |a: f64, b: f64| Interval::new(a.min(b), a.max(b));
+            let (acc, x, y) = (interval(ends[0], ends[1]), interval(ends[2], ends[3]), interval(ends[4], ends[5]));
+            let bits = |i: Interval| (i.lo.to_bits(), i.hi.to_bits());
+            let mut fused = acc;
+            fused.add_product(&x, &y, negate);
+            let product = x.times(&y);
+            let plain = if negate { acc.minus(&product) } else { acc.plus(&product) };
+            prop_assert_eq!(bits(fused), bits(plain));
         }
 
         #[test]
@@ -648,14 +683,20 @@ mod tests {
 
     proptest! {
         /// The short path of `from_rat` gives the general path's interval,
-        /// bit for bit, on both sides of 2^53.
+        /// bit for bit, on both sides of 2^53; an integer below 2^53 is
+        /// its point.
         #[test]
         fn short_rationals_are_enclosed_as_before(n in any::<i64>(), d in 1i64..i64::MAX, shift in 0u32..12) {
             let (n, d) = (n >> shift, d >> shift.min(8));
             let x = Rat::from_frac(n, d.max(1));
             let general = Interval::from_int(x.numer()).div_positive(Interval::from_int(x.denom()));
             let short = Interval::from_rat(&x);
-            prop_assert_eq!((short.lo.to_bits(), short.hi.to_bits()), (general.lo.to_bits(), general.hi.to_bits()));
+            match (x.numer().to_f64_exact(), x.denom().is_one()) {
+                // An integer of `f64` is its own point (the general path
+                // widens the quotient by `1`).
+                (Some(n), true) => prop_assert_eq!((short.lo, short.hi), (n, n)),
+                _ => prop_assert_eq!((short.lo.to_bits(), short.hi.to_bits()), (general.lo.to_bits(), general.hi.to_bits())),
+            }
         }
     }
 

@@ -14,13 +14,12 @@
 //! for exactly zero derivatives are kept too, term for term.
 //!
 //! Bitwise equality with the nested type holds when its two copies of
-//! `f′` stay equal, which they do as long as every jet with `f′ = 0`
-//! (exactly, [`RingOps::is_zero`]) also has `f″ = 0`. Over
-//! [`crate::Interval`] that holds of constants, of every computed jet (an
-//! outward rounded sum or product is never the exact point zero) and of
-//! enclosures of a polynomial's derivatives by Horner's rule (`f′` is a
-//! rounded sum unless the polynomial is constant); the inputs must have
-//! it. Over exact rings the two types agree in value always.
+//! `f′` stay equal. They do where every jet with `f′ = 0` (exactly,
+//! [`RingOps::is_zero`]) also has `f″ = 0`, and over [`crate::Interval`]
+//! for every jet: its ring operations make a product with the exact zero
+//! the exact zero and a sum with it the other operand, bit for bit, so
+//! each shortcut gives the very term it skips. Over exact rings the two
+//! types agree in value always.
 
 use crate::RingOps;
 

@@ -38,7 +38,9 @@ pub trait RingOps: Clone + std::fmt::Debug {
     /// multiply-accumulate of dot products and determinant expansions.
     /// The default is exactly `self.plus(&x.times(y))` (resp. `minus`), so
     /// approximate types round as before; an exact type with fixed storage
-    /// may override it to accumulate in place (same value: exactness).
+    /// may override it to accumulate in place (same value: exactness), and
+    /// an approximate one to skip work that changes no bit (`Interval`
+    /// skips a zero factor, whose product its `plus` adds as the identity).
     fn add_product(&mut self, x: &Self, y: &Self, negate: bool) {
         let term = x.times(y);
         *self = if negate {
