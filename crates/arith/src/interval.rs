@@ -143,6 +143,23 @@ impl Interval {
         }
     }
 
+    /// `self·x + c` for a Horner step over `x ≥ 0`: bit for bit
+    /// `self.mul_fast(x) + c` while `x.lo ≥ 0` and `x`, `self` and `c` are
+    /// finite, without `mul_fast`'s tests of them. Otherwise the result is
+    /// not finite (an infinite or NaN end, which stays so through later
+    /// steps), and the caller redoes the pass with the tests:
+    /// `ScaledPoly`'s Horner passes take this step and check only their
+    /// results.
+    #[inline]
+    pub fn mul_add_nonneg_unchecked(self, x: Interval, c: Interval) -> Interval {
+        let lo = self.lo * if self.lo >= 0.0 { x.lo } else { x.hi };
+        let hi = self.hi * if self.hi >= 0.0 { x.hi } else { x.lo };
+        Interval {
+            lo: down(down(lo) + c.lo),
+            hi: up(up(hi) + c.hi),
+        }
+    }
+
     /// The exact point `[0, 0]` (of either zero's sign).
     #[inline]
     fn is_zero_point(&self) -> bool {

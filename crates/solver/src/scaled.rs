@@ -72,12 +72,17 @@ impl ScaledPoly {
     /// bit, their Horner steps taken in lockstep (see `lockstep`: the
     /// steps of independent polynomials alternate).
     pub fn enclose_each<const N: usize>(polys: [&ScaledPoly; N], x: Interval) -> [Interval; N] {
-        lockstep(
-            polys.map(|p| &p.coeffs[..]),
-            0,
-            Interval::point(0.0),
-            |acc, _, c| acc.mul_fast(x) + *c,
-        )
+        let lists = polys.map(|p| &p.coeffs[..]);
+        let zero = Interval::point(0.0);
+        if nonneg_finite(x) {
+            let out = lockstep(lists, 0, zero, |acc, _, c| {
+                acc.mul_add_nonneg_unchecked(x, *c)
+            });
+            if out.iter().all(Interval::is_finite) {
+                return out;
+            }
+        }
+        lockstep(lists, 0, zero, |acc, _, c| acc.mul_fast(x) + *c)
     }
 
     /// A certified enclosure of `{ p⁽ʳ⁾(x)·2^(-shift) : x ∈ X }` for
@@ -116,15 +121,27 @@ impl ScaledPoly {
         x: Interval,
     ) -> [(Interval, Interval); N] {
         let zero = Interval::point(0.0);
-        lockstep(
-            polys.map(|p| p.derived()),
-            1,
-            (zero, zero),
-            |(d1, d2), i, d| {
-                let d1 = d1.mul_fast(x) + d[0];
-                (d1, if i >= 2 { d2.mul_fast(x) + d[1] } else { d2 })
-            },
-        )
+        let lists = polys.map(|p| p.derived());
+        if nonneg_finite(x) {
+            let out = lockstep(lists, 1, (zero, zero), |(d1, d2), i, d| {
+                let d1 = d1.mul_add_nonneg_unchecked(x, d[0]);
+                (
+                    d1,
+                    if i >= 2 {
+                        d2.mul_add_nonneg_unchecked(x, d[1])
+                    } else {
+                        d2
+                    },
+                )
+            });
+            if out.iter().all(|(d1, d2)| d1.is_finite() && d2.is_finite()) {
+                return out;
+            }
+        }
+        lockstep(lists, 1, (zero, zero), |(d1, d2), i, d| {
+            let d1 = d1.mul_fast(x) + d[0];
+            (d1, if i >= 2 { d2.mul_fast(x) + d[1] } else { d2 })
+        })
     }
 
     /// `(p(x), p'(x))` approximately, scaled.
@@ -146,6 +163,14 @@ impl ScaledPoly {
             |(v, d), _, &c| (v * x + c, d * x + v),
         )
     }
+}
+
+/// `x ≥ 0` with finite ends: where the Horner passes may take
+/// [`Interval::mul_add_nonneg_unchecked`] and check only their results
+/// (a pass whose every step is finite is `mul_fast` and `+` bit for bit;
+/// one that is not ends non-finite and is redone with them).
+fn nonneg_finite(x: Interval) -> bool {
+    x.lo >= 0.0 && x.hi < f64::INFINITY
 }
 
 /// Horner's rule on `N` coefficient lists (low → high) at once: the
@@ -233,6 +258,33 @@ mod tests {
             let (d1, d2) = sp.enclose_derivatives(x);
             prop_assert_eq!(bits(d1), bits(reference(&sp, 1, x)));
             prop_assert_eq!(bits(d2), bits(reference(&sp, 2, x)));
+        }
+
+        /// The unchecked Horner passes over `x ≥ 0` are `mul_fast` and `+`
+        /// bit for bit, also where a step overflows or `x` is unbounded or
+        /// zero (the pass ends non-finite and is redone with the tests):
+        /// coefficients scaled up to about `2^1000`, `x` up to `2^40`.
+        #[test]
+        fn unchecked_passes_are_the_checked_ones(
+            raw in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 0..15), 3),
+            up in 0i64..400,
+            lo in prop_oneof![Just(0.0), Just(-0.0), 0.0f64..4.0, 1.0f64..1e12],
+            w in prop_oneof![Just(0.0), Just(f64::INFINITY), 0.0f64..1e3],
+        ) {
+            let polys: Vec<ScaledPoly> = raw
+                .iter()
+                .map(|r| ScaledPoly::with_shift(&ZPoly::new(r.iter().map(|&c| Int::from(c).shl(600)).collect()), -up))
+                .collect();
+            let each = [&polys[0], &polys[1], &polys[2]];
+            let x = Interval::new(lo, lo + w);
+            let (values, derivatives) = (ScaledPoly::enclose_each(each, x), ScaledPoly::enclose_derivatives_each(each, x));
+            for (k, p) in polys.iter().enumerate() {
+                let checked = p.coeffs.iter().rev().fold(Interval::point(0.0), |acc, c| acc.mul_fast(x) + *c);
+                prop_assert_eq!(bits(values[k]), bits(checked));
+                prop_assert_eq!(bits(values[k]), bits(horner(p, x)));
+                prop_assert_eq!(bits(derivatives[k].0), bits(reference(p, 1, x)));
+                prop_assert_eq!(bits(derivatives[k].1), bits(reference(p, 2, x)));
+            }
         }
 
         /// Three polynomials of different lengths or of one (none, a
