@@ -143,15 +143,17 @@ impl Interval {
         }
     }
 
-    /// `self·x + c` for a Horner step over `x ≥ 0`: bit for bit
-    /// `self.mul_fast(x) + c` while `x.lo ≥ 0` and `x`, `self` and `c` are
-    /// finite, without `mul_fast`'s tests of them. Otherwise the result is
-    /// not finite (an infinite or NaN end, which stays so through later
-    /// steps), and the caller redoes the pass with the tests:
-    /// `ScaledPoly`'s Horner passes take this step and check only their
-    /// results.
+    /// `self·x + c` for a Horner step over `x ≥ 0`, for a caller that has
+    /// checked `0 ≤ x.lo ≤ x.hi < ∞`: bit for bit `self.mul_fast(x) + c`
+    /// while `self` and `c` are finite too, without `mul_fast`'s tests of
+    /// them. Where `self` or `c` has an infinite or NaN end, the result has
+    /// one, and so do the steps after it: `ScaledPoly`'s Horner passes take
+    /// this step, test only their results, and redo a pass whose result is
+    /// not finite with `mul_fast` and `+`. (For `x` outside that range the
+    /// result may be finite and wrong.)
     #[inline]
     pub fn mul_add_nonneg_unchecked(self, x: Interval, c: Interval) -> Interval {
+        debug_assert!(0.0 <= x.lo && x.lo <= x.hi && x.hi < f64::INFINITY);
         let lo = self.lo * if self.lo >= 0.0 { x.lo } else { x.hi };
         let hi = self.hi * if self.hi >= 0.0 { x.hi } else { x.lo };
         Interval {
@@ -535,6 +537,57 @@ mod tests {
         assert_eq!((zero * x).lo, -f64::from_bits(1));
         // And both agree away from zero.
         assert_eq!(x.times(&p), x * p);
+    }
+
+    /// The unchecked Horner step is `mul_fast` and `+` bit for bit on
+    /// finite operands at their edges (signed zeros, `MAX`, subnormals, a
+    /// product that overflows), and keeps a non-finite end non-finite.
+    #[test]
+    fn unchecked_step_is_mul_fast_and_sum() {
+        let ends = [
+            0.0,
+            -0.0,
+            5e-324,
+            -5e-324,
+            1.5,
+            -2.5,
+            1e300,
+            -1e300,
+            f64::MAX,
+            -f64::MAX,
+        ];
+        let intervals: Vec<Interval> = ends
+            .iter()
+            .flat_map(|&a| ends.iter().map(move |&b| Interval::new(a.min(b), a.max(b))))
+            .collect();
+        let xs = [
+            (0.0, 0.0),
+            (-0.0, 0.0),
+            (0.0, 2.0),
+            (1.0, 3.0),
+            (0.5, 1e300),
+        ];
+        let bits = |i: Interval| (i.lo.to_bits(), i.hi.to_bits());
+        for &(lo, hi) in &xs {
+            let x = Interval::new(lo, hi);
+            for &acc in &intervals {
+                for &c in intervals.iter().step_by(7) {
+                    let fast = acc.mul_add_nonneg_unchecked(x, c);
+                    assert_eq!(
+                        bits(fast),
+                        bits(acc.mul_fast(x) + c),
+                        "{acc:?}·{x:?} + {c:?}"
+                    );
+                }
+                for bad in [
+                    Interval::new(f64::NEG_INFINITY, 1.0),
+                    Interval::new(-1.0, f64::INFINITY),
+                ] {
+                    assert!(!bad.mul_add_nonneg_unchecked(x, acc).is_finite());
+                    assert!(!acc.mul_add_nonneg_unchecked(x, bad).is_finite());
+                }
+            }
+        }
     }
 
     #[test]

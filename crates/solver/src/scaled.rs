@@ -165,12 +165,12 @@ impl ScaledPoly {
     }
 }
 
-/// `x ≥ 0` with finite ends: where the Horner passes may take
+/// `0 ≤ x.lo ≤ x.hi < ∞`: where the Horner passes may take
 /// [`Interval::mul_add_nonneg_unchecked`] and check only their results
 /// (a pass whose every step is finite is `mul_fast` and `+` bit for bit;
 /// one that is not ends non-finite and is redone with them).
 fn nonneg_finite(x: Interval) -> bool {
-    x.lo >= 0.0 && x.hi < f64::INFINITY
+    x.lo >= 0.0 && x.lo <= x.hi && x.hi < f64::INFINITY
 }
 
 /// Horner's rule on `N` coefficient lists (low → high) at once: the
@@ -240,6 +240,30 @@ mod tests {
         (iv.lo.to_bits(), iv.hi.to_bits())
     }
 
+    /// A pass that overflows takes the fallback, and gives the checked
+    /// pass's bits: lists of one length (`lockstep`'s fast branch) whose
+    /// unchecked pass ends non-finite.
+    #[test]
+    fn overflowing_passes_fall_back() {
+        let p = ZPoly::new((1..8).map(|c| Int::from(c).shl(1000)).collect());
+        let polys = [0, 1, 2].map(|_| ScaledPoly::with_shift(&p, 0));
+        let each = [&polys[0], &polys[1], &polys[2]];
+        let x = Interval::new(0.0, 1e50);
+        let unchecked = polys[0]
+            .coeffs
+            .iter()
+            .rev()
+            .fold(Interval::point(0.0), |acc, c| {
+                acc.mul_add_nonneg_unchecked(x, *c)
+            });
+        assert!(!unchecked.is_finite());
+        let values = ScaledPoly::enclose_each(each, x);
+        let (d1, d2) = ScaledPoly::enclose_derivatives_each(each, x)[0];
+        assert_eq!(bits(values[0]), bits(horner(&polys[0], x)));
+        assert_eq!(bits(d1), bits(reference(&polys[0], 1, x)));
+        assert_eq!(bits(d2), bits(reference(&polys[0], 2, x)));
+    }
+
     proptest! {
         /// The derivatives from the kept products, alone or both in one
         /// pass, are the reference's bit for bit (long coefficients, so
@@ -260,10 +284,12 @@ mod tests {
             prop_assert_eq!(bits(d2), bits(reference(&sp, 2, x)));
         }
 
-        /// The unchecked Horner passes over `x ≥ 0` are `mul_fast` and `+`
-        /// bit for bit, also where a step overflows or `x` is unbounded or
-        /// zero (the pass ends non-finite and is redone with the tests):
-        /// coefficients scaled up to about `2^1000`, `x` up to `2^40`.
+        /// The enclosures over `x ≥ 0` are the checked passes' bit for
+        /// bit, also where a step overflows (the unchecked pass ends
+        /// non-finite and is redone with the tests): coefficients scaled up
+        /// to about `2^1062`, so some are infinite, `x` up to `10^12`, zero,
+        /// or unbounded (which the unchecked pass leaves to the checked
+        /// one).
         #[test]
         fn unchecked_passes_are_the_checked_ones(
             raw in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 0..15), 3),
