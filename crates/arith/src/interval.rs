@@ -135,12 +135,22 @@ impl Interval {
         if !(x.lo >= 0.0 && finite(&x) && finite(&self)) {
             return self * x;
         }
-        let lo = self.lo * if self.lo >= 0.0 { x.lo } else { x.hi };
-        let hi = self.hi * if self.hi >= 0.0 { x.hi } else { x.lo };
+        let (lo, hi) = self.nonneg_corners(x);
         Interval {
             lo: down(lo),
             hi: up(hi),
         }
+    }
+
+    /// The least and greatest corner products of `self·x` for `x ≥ 0`,
+    /// rounded to nearest: `lo·x.lo` or `lo·x.hi` by the sign of `lo`, and
+    /// likewise for `hi` ([`Interval::mul_fast`]).
+    #[inline]
+    fn nonneg_corners(self, x: Interval) -> (f64, f64) {
+        (
+            self.lo * if self.lo >= 0.0 { x.lo } else { x.hi },
+            self.hi * if self.hi >= 0.0 { x.hi } else { x.lo },
+        )
     }
 
     /// `self·x + c` for a Horner step over `x ≥ 0`, for a caller that has
@@ -154,8 +164,7 @@ impl Interval {
     #[inline]
     pub fn mul_add_nonneg_unchecked(self, x: Interval, c: Interval) -> Interval {
         debug_assert!(0.0 <= x.lo && x.lo <= x.hi && x.hi < f64::INFINITY);
-        let lo = self.lo * if self.lo >= 0.0 { x.lo } else { x.hi };
-        let hi = self.hi * if self.hi >= 0.0 { x.hi } else { x.lo };
+        let (lo, hi) = self.nonneg_corners(x);
         Interval {
             lo: down(down(lo) + c.lo),
             hi: up(up(hi) + c.hi),
@@ -453,7 +462,7 @@ impl crate::RingOps for Interval {
         Interval::from_i64(v)
     }
     fn is_zero(&self) -> bool {
-        self.lo == 0.0 && self.hi == 0.0
+        self.is_zero_point()
     }
     #[inline]
     fn plus(&self, o: &Self) -> Self {

@@ -72,17 +72,14 @@ impl ScaledPoly {
     /// bit, their Horner steps taken in lockstep (see `lockstep`: the
     /// steps of independent polynomials alternate).
     pub fn enclose_each<const N: usize>(polys: [&ScaledPoly; N], x: Interval) -> [Interval; N] {
-        let lists = polys.map(|p| &p.coeffs[..]);
-        let zero = Interval::point(0.0);
-        if nonneg_finite(x) {
-            let out = lockstep(lists, 0, zero, |acc, _, c| {
-                acc.mul_add_nonneg_unchecked(x, *c)
-            });
-            if out.iter().all(Interval::is_finite) {
-                return out;
-            }
-        }
-        lockstep(lists, 0, zero, |acc, _, c| acc.mul_fast(x) + *c)
+        horner_passes(
+            polys.map(|p| &p.coeffs[..]),
+            0,
+            Interval::point(0.0),
+            x,
+            Interval::is_finite,
+            |acc, _, c, mul_add| mul_add(acc, *c),
+        )
     }
 
     /// A certified enclosure of `{ p⁽ʳ⁾(x)·2^(-shift) : x ∈ X }` for
@@ -121,27 +118,17 @@ impl ScaledPoly {
         x: Interval,
     ) -> [(Interval, Interval); N] {
         let zero = Interval::point(0.0);
-        let lists = polys.map(|p| p.derived());
-        if nonneg_finite(x) {
-            let out = lockstep(lists, 1, (zero, zero), |(d1, d2), i, d| {
-                let d1 = d1.mul_add_nonneg_unchecked(x, d[0]);
-                (
-                    d1,
-                    if i >= 2 {
-                        d2.mul_add_nonneg_unchecked(x, d[1])
-                    } else {
-                        d2
-                    },
-                )
-            });
-            if out.iter().all(|(d1, d2)| d1.is_finite() && d2.is_finite()) {
-                return out;
-            }
-        }
-        lockstep(lists, 1, (zero, zero), |(d1, d2), i, d| {
-            let d1 = d1.mul_fast(x) + d[0];
-            (d1, if i >= 2 { d2.mul_fast(x) + d[1] } else { d2 })
-        })
+        horner_passes(
+            polys.map(|p| p.derived()),
+            1,
+            (zero, zero),
+            x,
+            |(d1, d2)| d1.is_finite() && d2.is_finite(),
+            |(d1, d2), i, d, mul_add| {
+                let d1 = mul_add(d1, d[0]);
+                (d1, if i >= 2 { mul_add(d2, d[1]) } else { d2 })
+            },
+        )
     }
 
     /// `(p(x), p'(x))` approximately, scaled.
@@ -165,12 +152,30 @@ impl ScaledPoly {
     }
 }
 
-/// `0 ≤ x.lo ≤ x.hi < ∞`: where the Horner passes may take
-/// [`Interval::mul_add_nonneg_unchecked`] and check only their results
-/// (a pass whose every step is finite is `mul_fast` and `+` bit for bit;
-/// one that is not ends non-finite and is redone with them).
-fn nonneg_finite(x: Interval) -> bool {
-    x.lo >= 0.0 && x.lo <= x.hi && x.hi < f64::INFINITY
+/// Interval Horner passes over `x` in [`lockstep`], each step
+/// `step(acc, index, coefficient, mul_add)` with `mul_add(a, c) = a·x + c`.
+/// Where `0 ≤ x.lo ≤ x.hi < ∞` the pass first takes
+/// [`Interval::mul_add_nonneg_unchecked`] and tests only its results
+/// (`finite`): a pass whose every step is finite is `mul_fast` and `+` bit
+/// for bit, and one that is not ends non-finite. Otherwise, or then, the
+/// pass is taken with `mul_fast` and `+`.
+fn horner_passes<const N: usize, C, A: Copy>(
+    lists: [&[C]; N],
+    skip: usize,
+    start: A,
+    x: Interval,
+    finite: impl Fn(&A) -> bool,
+    step: impl Fn(A, usize, &C, &dyn Fn(Interval, Interval) -> Interval) -> A,
+) -> [A; N] {
+    if x.lo >= 0.0 && x.lo <= x.hi && x.hi < f64::INFINITY {
+        let unchecked = |a: Interval, c: Interval| a.mul_add_nonneg_unchecked(x, c);
+        let out = lockstep(lists, skip, start, |a, i, c| step(a, i, c, &unchecked));
+        if out.iter().all(&finite) {
+            return out;
+        }
+    }
+    let checked = |a: Interval, c: Interval| a.mul_fast(x) + c;
+    lockstep(lists, skip, start, |a, i, c| step(a, i, c, &checked))
 }
 
 /// Horner's rule on `N` coefficient lists (low → high) at once: the
