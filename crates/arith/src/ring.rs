@@ -49,6 +49,19 @@ pub trait RingOps: Clone + std::fmt::Debug {
             self.plus(&term)
         };
     }
+    /// `self ← x·y`, over what `self` held. The default is exactly
+    /// `*self = x.times(y)`; a type with large fixed storage may override it
+    /// to build the product where `self` lives (same value: exactness),
+    /// which a product returned by value cannot always do (the compiler
+    /// builds it in a temporary and copies it over).
+    fn set_product(&mut self, x: &Self, y: &Self) {
+        *self = x.times(y);
+    }
+    /// `self ← self + o`. The default is exactly `*self = self.plus(o)`;
+    /// overridden like [`RingOps::set_product`].
+    fn add_assign(&mut self, o: &Self) {
+        *self = self.plus(o);
+    }
     /// `self · self`. The default is exactly `self.times(self)`; an exact
     /// type may override it with a cheaper squaring (same value:
     /// exactness).

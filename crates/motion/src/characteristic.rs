@@ -619,7 +619,10 @@ impl IntegerPoly for SmallPoly {
         }
         // g divides a coefficient below 2^127 in size: it fits i128.
         let g = i128::try_from(g).ok()?;
-        let c = c.map(|p| p.div_exact_int(g));
+        let mut c = c;
+        for p in &mut c {
+            p.div_exact_int_assign(g);
+        }
         c.iter().all(SmallPoly::is_exact).then_some(c)
     }
 }

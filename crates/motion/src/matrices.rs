@@ -512,14 +512,15 @@ impl PlacedQuadric {
                 .all(|e| e.to_i128().is_some())
                 .then(|| q.map(|row| row.map(|e| SmallPoly::constant(&e))));
         }
-        let n = self.frame.map(SmallPoly::lowered).inverse();
+        let mut n = self.frame.map(SmallPoly::lowered).inverse();
         let g = n.iter().flatten().try_fold(0, |g, e| e.gcd_with(g))?;
-        let n = if g > 1 {
+        if g > 1 {
             let g = i64::try_from(g).ok()?;
-            n.map(|row| row.map(|e| e.div_small(g)))
-        } else {
-            n
-        };
+            // In place: the entries are 288-byte values.
+            for e in n.iter_mut().flatten() {
+                e.div_exact_int_assign(g.into());
+            }
+        }
         let q = congruence(&n, &self.diagonal.each_ref().map(SmallPoly::lowered));
         q.iter().flatten().all(SmallPoly::is_exact).then_some(q)
     }

@@ -264,6 +264,23 @@ impl SmallPoly {
         })
     }
 
+    /// [`SmallPoly::div_exact_int`] in place (no 288-byte result copied
+    /// over `self`).
+    pub fn div_exact_int_assign(&mut self, k: i128) {
+        if self.overflow {
+            return;
+        }
+        for x in &mut self.c[..self.len] {
+            match x.checked_div(k).filter(|&q| q * k == *x) {
+                Some(q) => *x = q,
+                None => {
+                    *self = SmallPoly::overflowed();
+                    return;
+                }
+            }
+        }
+    }
+
     /// Coefficientwise `op`, overflow propagated.
     fn zip(&self, o: &SmallPoly, op: impl Fn(i128, i128) -> Option<i128>) -> SmallPoly {
         if self.overflow || o.overflow {
@@ -359,6 +376,37 @@ impl RingOps for SmallPoly {
     /// result, as `self.plus(&x.times(y))` would.
     fn add_product(&mut self, x: &Self, y: &Self, negate: bool) {
         self.accumulate(x, y, negate);
+    }
+    /// The product built in `self`'s slots: a product returned by value
+    /// is built in a temporary and its 288 bytes copied (a `memcpy` call).
+    fn set_product(&mut self, x: &Self, y: &Self) {
+        if self.overflow {
+            *self = SmallPoly::zero();
+        } else {
+            // The slots past the length are zero already.
+            self.c[..self.len].fill(0);
+            self.len = 0;
+        }
+        self.accumulate(x, y, false);
+    }
+    /// The sum built in `self`'s slots, as [`SmallPoly::set_product`].
+    fn add_assign(&mut self, o: &Self) {
+        if self.overflow || o.overflow {
+            *self = SmallPoly::overflowed();
+            return;
+        }
+        let len = self.len.max(o.len);
+        for (slot, &y) in self.c.iter_mut().zip(&o.c).take(len) {
+            match slot.checked_add(y) {
+                Some(v) => *slot = v,
+                None => {
+                    *self = SmallPoly::overflowed();
+                    return;
+                }
+            }
+        }
+        self.len = len;
+        self.trim();
     }
     /// Exact division; a coefficient `k` does not divide counts as an
     /// overflow (the exact value is not in `ℤ[t]`).
@@ -505,6 +553,43 @@ mod tests {
                 }
             }
             check(sa.times(&SmallPoly::from_i64(6)).div_small(3), &a * &ZPoly::from_i64s(&[2]), small)?;
+        }
+
+        /// The in-place operations are the by-value ones, whatever the
+        /// slot held before (a longer value, an overflowed one): the same
+        /// value, overflow and all (compared through `to_zpoly`, `None`
+        /// for an overflow), and the same slots past the length (zero).
+        #[test]
+        fn in_place_operations_are_the_by_value_ones(
+            a in zpoly(9, 126),
+            b in zpoly(9, 126),
+            old in zpoly(17, 100),
+            overflowed in proptest::bool::ANY,
+            k in -40i128..40,
+        ) {
+            let (Some(sa), Some(sb)) = (SmallPoly::from_zpoly(&a), SmallPoly::from_zpoly(&b)) else {
+                return Ok(());
+            };
+            let before = if overflowed {
+                SmallPoly::overflowed()
+            } else {
+                SmallPoly::from_zpoly(&old).expect("short coefficients")
+            };
+            let same = |x: &SmallPoly, y: &SmallPoly| x.to_zpoly() == y.to_zpoly() && x.c == y.c;
+            let mut p = before.clone();
+            p.set_product(&sa, &sb);
+            prop_assert!(same(&p, &sa.times(&sb)), "set_product");
+            let mut q = sa.clone();
+            q.add_assign(&sb);
+            prop_assert!(same(&q, &sa.plus(&sb)), "add_assign");
+            let mut r = before.clone();
+            r.add_assign(&sa);
+            prop_assert!(same(&r, &before.plus(&sa)), "add_assign onto the old slot");
+            if k != 0 {
+                let mut d = sa.times(&SmallPoly::from_i64(3));
+                d.div_exact_int_assign(k);
+                prop_assert!(same(&d, &sa.times(&SmallPoly::from_i64(3)).div_exact_int(k)), "div_exact_int_assign");
+            }
         }
     }
 

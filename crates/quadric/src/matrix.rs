@@ -16,19 +16,24 @@ pub type Mat3<R> = [[R; 3]; 3];
 /// matrix `R·diag(r²)·Rᵀ` (`N = Rᵀ`).
 pub fn congruence<R: RingOps, const N: usize>(n: &[[R; N]; N], d: &[R; N]) -> [[R; N]; N] {
     // scaled[k][j] = d_k · N[k][j]
-    let scaled: [[R; N]; N] =
-        std::array::from_fn(|k| std::array::from_fn(|j| d[k].times(&n[k][j])));
+    // Built in place: entries may be large values (polynomials).
+    let mut scaled: [[R; N]; N] = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for (k, row) in scaled.iter_mut().enumerate() {
+        for (j, e) in row.iter_mut().enumerate() {
+            e.set_product(&d[k], &n[k][j]);
+        }
+    }
     let mut out: [[R; N]; N] = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
     for i in 0..N {
         for j in i..N {
-            let mut s = R::zero();
             for k in 0..N {
                 if !n[k][i].is_zero() && !scaled[k][j].is_zero() {
-                    s.add_product(&n[k][i], &scaled[k][j], false);
+                    out[i][j].add_product(&n[k][i], &scaled[k][j], false);
                 }
             }
-            out[j][i] = s.clone();
-            out[i][j] = s;
+            if j > i {
+                out[j][i] = out[i][j].clone();
+            }
         }
     }
     out
@@ -42,9 +47,22 @@ fn minor2<R: RingOps>(m: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
 /// `x[r][i]·y[r+1][j] − x[r][j]·y[r+1][i]`: the 2×2 minor with its top row
 /// from `x` and its bottom row from `y`.
 fn mixed_minor2<R: RingOps>(x: &Mat4<R>, y: &Mat4<R>, r: usize, i: usize, j: usize) -> R {
-    let mut m = x[r][i].times(&y[r + 1][j]);
-    m.add_product(&x[r][j], &y[r + 1][i], true);
+    let mut m = R::zero();
+    set_mixed_minor2(&mut m, x, y, r, i, j);
     m
+}
+
+/// [`mixed_minor2`] into `out` (built where it lives).
+fn set_mixed_minor2<R: RingOps>(
+    out: &mut R,
+    x: &Mat4<R>,
+    y: &Mat4<R>,
+    r: usize,
+    i: usize,
+    j: usize,
+) {
+    out.set_product(&x[r][i], &y[r + 1][j]);
+    out.add_product(&x[r][j], &y[r + 1][i], true);
 }
 
 /// `m` times the lcm of its entries' denominators: the same quadric (a
@@ -164,13 +182,21 @@ pub fn adj4<R: RingOps>(m: &Mat4<R>) -> Mat4<R> {
 pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
     // The 2×2 minor of rows (r, r + 1), columns (i, j) of λA + B as
     // [λ², λ, 1] coefficients.
-    let minor = |r: usize, i: usize, j: usize| -> [R; 3] {
-        let cross = |x: &Mat4<R>, y: &Mat4<R>| mixed_minor2(x, y, r, i, j);
-        [cross(a, a), cross(a, b).plus(&cross(b, a)), cross(b, b)]
+    // Built in place: minors of polynomial entries are large values.
+    let minor = |m: &mut [R; 3], scratch: &mut R, r: usize, i: usize, j: usize| {
+        set_mixed_minor2(&mut m[0], a, a, r, i, j);
+        set_mixed_minor2(&mut m[1], a, b, r, i, j);
+        set_mixed_minor2(scratch, b, a, r, i, j);
+        m[1].add_assign(scratch);
+        set_mixed_minor2(&mut m[2], b, b, r, i, j);
     };
     let mut f: [R; 5] = std::array::from_fn(|_| R::zero());
+    let mut top: [R; 3] = std::array::from_fn(|_| R::zero());
+    let mut bottom: [R; 3] = std::array::from_fn(|_| R::zero());
+    let mut scratch = R::zero();
     for ((i, j), (k, l), positive) in LAPLACE_PAIRS {
-        let (top, bottom) = (minor(0, i, j), minor(2, k, l));
+        minor(&mut top, &mut scratch, 0, i, j);
+        minor(&mut bottom, &mut scratch, 2, k, l);
         for (p, t) in top.iter().enumerate() {
             for (q, u) in bottom.iter().enumerate() {
                 f[p + q].add_product(t, u, !positive);

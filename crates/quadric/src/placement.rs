@@ -86,23 +86,42 @@ fn scaled<R: RingOps>(s: &R, x: &Mat3<R>) -> Mat3<R> {
     x.each_ref().map(|row| row.each_ref().map(|e| s.times(e)))
 }
 
-/// `−x·v`.
-fn minus_times<R: RingOps>(x: &Mat3<R>, v: &[R; 3]) -> [R; 3] {
-    x.each_ref().map(|row| {
-        let mut t = R::zero();
-        for (a, b) in row.iter().zip(v) {
-            t.add_product(a, b, false);
-        }
-        t.negated()
-    })
-}
-
 /// Inverse of the rigid placement `X = R·Xbody + C/w` with `R = M/n`
 /// (`n = |q|² > 0`, `w > 0`): `[[Rᵀ, −Rᵀc], [0, 1]]` times the positive
 /// factor `w·n`, i.e. `[[w·Mᵀ, −Mᵀ·C], [0, w·n]]`.
 pub fn rigid_inverse<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
-    let mt: Mat3<R> = std::array::from_fn(|i| std::array::from_fn(|j| m[j][i].clone()));
-    block(scaled(w, &mt), minus_times(&mt, center), w.times(n))
+    inverse_block(
+        w,
+        |i, j| &m[j][i],
+        center,
+        |corner| corner.set_product(w, n),
+    )
+}
+
+/// `[[s·X, −X·v], [0, corner]]` with `X = (x(i, j))`, built where it is
+/// returned: each entry is formed in its slot ([`RingOps::set_product`],
+/// [`RingOps::add_product`]), the same operations as `s.times(x)` and a
+/// dot product, but no intermediate matrix of large values (polynomial
+/// entries) moved into place.
+fn inverse_block<'a, R: RingOps + 'a>(
+    s: &R,
+    x: impl Fn(usize, usize) -> &'a R,
+    v: &[R; 3],
+    corner: impl FnOnce(&mut R),
+) -> Mat4<R> {
+    let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
+    for (i, row) in out.iter_mut().take(3).enumerate() {
+        for (j, e) in row.iter_mut().take(3).enumerate() {
+            e.set_product(s, x(i, j));
+        }
+        let mut t = R::zero();
+        for (k, vk) in v.iter().enumerate() {
+            t.add_product(x(i, k), vk, false);
+        }
+        row[3] = t.negated();
+    }
+    corner(&mut out[3][3]);
+    out
 }
 
 /// The rigid placement `X = R·Xbody + C/w` with `R = M/n` itself, as a
@@ -127,7 +146,7 @@ pub fn affine_placement<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
 /// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
 pub fn affine_inverse<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
     let adj = adj3(l);
-    block(scaled(w, &adj), minus_times(&adj, d), det3(l))
+    inverse_block(w, |i, j| &adj[i][j], d, |corner| *corner = det3(l))
 }
 
 /// The body quadric `diag(1/r0², 1/r1², 1/r2², −1)` times the positive
