@@ -124,7 +124,7 @@ impl CharPoly {
                 .then(|| {
                     let [x, y] = [&pa, &pb].map(lowered);
                     let (tables, both) = shortened_tables::<SmallInt>(a, b, affine);
-                    let [dx, dy] = tables.map(|t| t.map(|d| SmallPoly::constant(&d)));
+                    let [dx, dy] = tables.each_ref().map(constants);
                     let both = both.map(|c| SmallPoly::constant(&c));
                     exact(placed_characteristic(&x, &dx, &y, &dy, both.as_ref()))
                 })
@@ -317,8 +317,24 @@ fn static_characteristic<I: Integer>(a: &StaticBody, b: &StaticBody) -> [I; 5] {
 /// A matrix in [`SmallPoly`] (entries that do not fit come in overflowed,
 /// and so do the results they reach).
 fn lowered(m: &Mat4<ZPoly>) -> Mat4<SmallPoly> {
-    m.each_ref()
-        .map(|row| row.each_ref().map(SmallPoly::lowered))
+    // In place: the entries are 288-byte values.
+    let mut out: Mat4<SmallPoly> =
+        std::array::from_fn(|_| std::array::from_fn(|_| SmallPoly::zero()));
+    for (slots, row) in out.iter_mut().zip(m) {
+        for (slot, p) in slots.iter_mut().zip(row) {
+            slot.set_lowered(p);
+        }
+    }
+    out
+}
+
+/// The table's entries as constant [`SmallPoly`]s, formed in place.
+fn constants<const N: usize>(t: &[SmallInt; N]) -> [SmallPoly; N] {
+    let mut out: [SmallPoly; N] = std::array::from_fn(|_| SmallPoly::zero());
+    for (slot, d) in out.iter_mut().zip(t) {
+        slot.set_constant(d);
+    }
+    out
 }
 
 /// `(degree, bits)` of every entry of these matrices.

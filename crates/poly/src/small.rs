@@ -98,6 +98,52 @@ impl SmallPoly {
         SmallPoly::build(p.coeffs().iter().map(Int::to_i128), p.coeffs().len())
     }
 
+    /// `*self = SmallPoly::lowered(p)` in `self`'s slots (no 288-byte
+    /// value built elsewhere and copied over).
+    pub fn set_lowered(&mut self, p: &ZPoly) {
+        self.clear();
+        let coeffs = p.coeffs();
+        if coeffs.len() > CAP {
+            *self = SmallPoly::overflowed();
+            return;
+        }
+        for (slot, v) in self.c.iter_mut().zip(coeffs) {
+            match v.to_i128() {
+                Some(v) => *slot = v,
+                None => {
+                    *self = SmallPoly::overflowed();
+                    return;
+                }
+            }
+        }
+        self.len = coeffs.len();
+        self.trim();
+    }
+
+    /// `*self = SmallPoly::constant(x)` in `self`'s slots.
+    pub fn set_constant(&mut self, x: &SmallInt) {
+        self.clear();
+        match x.to_i128() {
+            Some(v) => {
+                self.c[0] = v;
+                self.len = 1;
+                self.trim();
+            }
+            None => *self = SmallPoly::overflowed(),
+        }
+    }
+
+    /// Zero, in place: only the slots in use are cleared (those past the
+    /// length are zero already).
+    fn clear(&mut self) {
+        if self.overflow {
+            *self = SmallPoly::zero();
+        } else {
+            self.c[..self.len].fill(0);
+            self.len = 0;
+        }
+    }
+
     /// The constant `x` (overflowed when `x` is).
     pub fn constant(x: &SmallInt) -> SmallPoly {
         match x.to_i128() {
@@ -380,13 +426,7 @@ impl RingOps for SmallPoly {
     /// The product built in `self`'s slots: a product returned by value
     /// is built in a temporary and its 288 bytes copied (a `memcpy` call).
     fn set_product(&mut self, x: &Self, y: &Self) {
-        if self.overflow {
-            *self = SmallPoly::zero();
-        } else {
-            // The slots past the length are zero already.
-            self.c[..self.len].fill(0);
-            self.len = 0;
-        }
+        self.clear();
         self.accumulate(x, y, false);
     }
     /// The sum built in `self`'s slots, as [`SmallPoly::set_product`].
@@ -566,6 +606,7 @@ mod tests {
             old in zpoly(17, 100),
             overflowed in proptest::bool::ANY,
             k in -40i128..40,
+            wide in zpoly(20, 130),
         ) {
             let (Some(sa), Some(sb)) = (SmallPoly::from_zpoly(&a), SmallPoly::from_zpoly(&b)) else {
                 return Ok(());
@@ -576,6 +617,14 @@ mod tests {
                 SmallPoly::from_zpoly(&old).expect("short coefficients")
             };
             let same = |x: &SmallPoly, y: &SmallPoly| x.to_zpoly() == y.to_zpoly() && x.c == y.c;
+            // Lowering and constants, past the capacity and past i128 too.
+            let mut l = before.clone();
+            l.set_lowered(&wide);
+            prop_assert!(same(&l, &SmallPoly::lowered(&wide)), "set_lowered");
+            let c = SmallInt::of(wide.coeffs().first().unwrap_or(&Int::zero()));
+            let mut lc = before.clone();
+            lc.set_constant(&c);
+            prop_assert!(same(&lc, &SmallPoly::constant(&c)), "set_constant");
             let mut p = before.clone();
             p.set_product(&sa, &sb);
             prop_assert!(same(&p, &sa.times(&sb)), "set_product");

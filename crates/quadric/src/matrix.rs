@@ -289,21 +289,32 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
     let entry = |r: usize, c: usize| if c < 4 { &ma[r][c] } else { &mb[r][c - 4] };
     // 2×2 minors of rows (0, 1) and (2, 3) for every column pair i < j,
     // built in place at their triangular index (`pair_index`).
-    let minor = |r: usize, k: usize| {
+    // Each formed in its slot (entries may be large values: polynomials),
+    // by the operations of `x·y − z·w` with zero products skipped.
+    let minor = |m: &mut R, r: usize, k: usize| {
         let (i, j) = COLUMN_PAIRS[k];
-        let product = |x: &R, y: &R| (!x.is_zero() && !y.is_zero()).then(|| x.times(y));
-        match (
-            product(entry(r, i), entry(r + 1, j)),
-            product(entry(r, j), entry(r + 1, i)),
-        ) {
-            (Some(x), Some(y)) => x.minus(&y),
-            (Some(x), None) => x,
-            (None, Some(y)) => y.negated(),
-            (None, None) => R::zero(),
+        let nonzero = |x: &R, y: &R| !x.is_zero() && !y.is_zero();
+        let (x, y) = (entry(r, i), entry(r + 1, j));
+        let (z, w) = (entry(r, j), entry(r + 1, i));
+        match (nonzero(x, y), nonzero(z, w)) {
+            (true, true) => {
+                m.set_product(x, y);
+                m.add_product(z, w, true);
+            }
+            (true, false) => m.set_product(x, y),
+            (false, true) => {
+                m.set_product(z, w);
+                *m = m.negated();
+            }
+            (false, false) => {}
         }
     };
-    let top: [R; 28] = std::array::from_fn(|k| minor(0, k));
-    let bottom: [R; 28] = std::array::from_fn(|k| minor(2, k));
+    let mut top: [R; 28] = std::array::from_fn(|_| R::zero());
+    let mut bottom: [R; 28] = std::array::from_fn(|_| R::zero());
+    for k in 0..28 {
+        minor(&mut top[k], 0, k);
+        minor(&mut bottom[k], 2, k);
+    }
     let mut coeffs: [R; 5] = std::array::from_fn(|_| R::zero());
     // Grouped by A's columns outside T (`outside_a`, whose product `pa`
     // multiplies the inner sum once): 70 products by `pb` and 16 by `pa`
