@@ -95,6 +95,19 @@ impl<P: RingOps> Frame<P> {
             .chain(std::iter::once(w))
     }
 
+    /// Every entry, mutably, in the order of [`Frame::entries`].
+    fn entries_mut(&mut self) -> impl Iterator<Item = &mut P> {
+        let (m, v, n, w) = match self {
+            Frame::Rigid { m, n, center, w } => (m, center, Some(n), w),
+            Frame::Affine { l, d, w } => (l, d, None, w),
+        };
+        m.iter_mut()
+            .flatten()
+            .chain(v)
+            .chain(n)
+            .chain(std::iter::once(w))
+    }
+
     /// Every entry mapped by `f`.
     fn map<Q>(&self, f: impl Fn(&P) -> Q) -> Frame<Q> {
         let m3 = |m: &Mat3<P>| m.each_ref().map(|row| row.each_ref().map(&f));
@@ -512,7 +525,12 @@ impl PlacedQuadric {
                 .all(|e| e.to_i128().is_some())
                 .then(|| q.map(|row| row.map(|e| SmallPoly::constant(&e))));
         }
-        let mut n = self.frame.map(SmallPoly::lowered).inverse();
+        // The entries lowered in place (288-byte values).
+        let mut small = self.frame.map(|_| SmallPoly::zero());
+        for (slot, p) in small.entries_mut().zip(self.frame.entries()) {
+            slot.set_lowered(p);
+        }
+        let mut n = small.inverse();
         let g = n.iter().flatten().try_fold(0, |g, e| e.gcd_with(g))?;
         if g > 1 {
             let g = i64::try_from(g).ok()?;
