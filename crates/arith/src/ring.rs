@@ -59,7 +59,7 @@ pub trait RingOps: Clone + std::fmt::Debug {
     }
     /// `self ← self + o`. The default is exactly `*self = self.plus(o)`;
     /// overridden like [`RingOps::set_product`].
-    fn add_assign(&mut self, o: &Self) {
+    fn plus_assign(&mut self, o: &Self) {
         *self = self.plus(o);
     }
     /// `self · self`. The default is exactly `self.times(self)`; an exact

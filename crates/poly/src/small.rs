@@ -430,7 +430,7 @@ impl RingOps for SmallPoly {
         self.accumulate(x, y, false);
     }
     /// The sum built in `self`'s slots, as [`SmallPoly::set_product`].
-    fn add_assign(&mut self, o: &Self) {
+    fn plus_assign(&mut self, o: &Self) {
         if self.overflow || o.overflow {
             *self = SmallPoly::overflowed();
             return;
@@ -597,26 +597,37 @@ mod tests {
 
         /// The in-place operations are the by-value ones, whatever the
         /// slot held before (a longer value, an overflowed one): the same
-        /// value, overflow and all (compared through `to_zpoly`, `None`
-        /// for an overflow), and the same slots past the length (zero).
+        /// representation (slots, length, overflow marker), with operands
+        /// and old slots that are overflowed or whose sums overflow part
+        /// way through.
         #[test]
         fn in_place_operations_are_the_by_value_ones(
-            a in zpoly(9, 126),
-            b in zpoly(9, 126),
-            old in zpoly(17, 100),
+            a in zpoly(9, 127),
+            b in zpoly(9, 127),
+            old in zpoly(17, 127),
             overflowed in proptest::bool::ANY,
+            operand_overflowed in 0u8..4,
             k in -40i128..40,
             wide in zpoly(20, 130),
         ) {
             let (Some(sa), Some(sb)) = (SmallPoly::from_zpoly(&a), SmallPoly::from_zpoly(&b)) else {
                 return Ok(());
             };
+            // An overflowed operand now and then (x, y or both).
+            let (sa, sb) = match operand_overflowed {
+                1 => (SmallPoly::overflowed(), sb),
+                2 => (sa, SmallPoly::overflowed()),
+                _ => (sa, sb),
+            };
             let before = if overflowed {
                 SmallPoly::overflowed()
             } else {
-                SmallPoly::from_zpoly(&old).expect("short coefficients")
+                SmallPoly::from_zpoly(&old).expect("i128 coefficients")
             };
-            let same = |x: &SmallPoly, y: &SmallPoly| x.to_zpoly() == y.to_zpoly() && x.c == y.c;
+            // The whole representation: slots, length and marker.
+            let same = |x: &SmallPoly, y: &SmallPoly| {
+                x.c == y.c && x.len == y.len && x.overflow == y.overflow
+            };
             // Lowering and constants, past the capacity and past i128 too.
             let mut l = before.clone();
             l.set_lowered(&wide);
@@ -628,16 +639,23 @@ mod tests {
             let mut p = before.clone();
             p.set_product(&sa, &sb);
             prop_assert!(same(&p, &sa.times(&sb)), "set_product");
+            // Sums of 127-bit coefficients overflow part way through.
             let mut q = sa.clone();
-            q.add_assign(&sb);
-            prop_assert!(same(&q, &sa.plus(&sb)), "add_assign");
+            q.plus_assign(&sb);
+            prop_assert!(same(&q, &sa.plus(&sb)), "plus_assign");
+            // Leading coefficients that cancel (the length must shrink).
+            let cancel = sa.negated().plus(&sb.times(&SmallPoly::from_zpoly(&ZPoly::from_i64s(&[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1])).expect("t^10")));
+            let mut z = sa.clone();
+            z.plus_assign(&cancel);
+            prop_assert!(same(&z, &sa.plus(&cancel)), "plus_assign that cancels");
             let mut r = before.clone();
-            r.add_assign(&sa);
-            prop_assert!(same(&r, &before.plus(&sa)), "add_assign onto the old slot");
-            if k != 0 {
-                let mut d = sa.times(&SmallPoly::from_i64(3));
+            r.plus_assign(&sa);
+            prop_assert!(same(&r, &before.plus(&sa)), "plus_assign onto the old slot");
+            // Exact and inexact divisions, k = 0 and k = −1 included.
+            for base in [sa.times(&SmallPoly::from_i64(3)), sa.clone(), before.clone()] {
+                let mut d = base.clone();
                 d.div_exact_int_assign(k);
-                prop_assert!(same(&d, &sa.times(&SmallPoly::from_i64(3)).div_exact_int(k)), "div_exact_int_assign");
+                prop_assert!(same(&d, &base.div_exact_int(k)), "div_exact_int_assign");
             }
         }
     }

@@ -187,7 +187,7 @@ pub fn characteristic<R: RingOps>(a: &Mat4<R>, b: &Mat4<R>) -> [R; 5] {
         set_mixed_minor2(&mut m[0], a, a, r, i, j);
         set_mixed_minor2(&mut m[1], a, b, r, i, j);
         set_mixed_minor2(scratch, b, a, r, i, j);
-        m[1].add_assign(scratch);
+        m[1].plus_assign(scratch);
         set_mixed_minor2(&mut m[2], b, b, r, i, j);
     };
     let mut f: [R; 5] = std::array::from_fn(|_| R::zero());
@@ -289,8 +289,13 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
     let entry = |r: usize, c: usize| if c < 4 { &ma[r][c] } else { &mb[r][c - 4] };
     // 2×2 minors of rows (0, 1) and (2, 3) for every column pair i < j,
     // built in place at their triangular index (`pair_index`).
-    // Each formed in its slot (entries may be large values: polynomials),
-    // by the operations of `x·y − z·w` with zero products skipped.
+    // Each formed in its slot (entries may be large values: polynomials):
+    // `x·y − z·w` with zero products skipped, by the same ring operations
+    // as `x.times(y).minus(&z.times(w))` wherever `add_product` is its
+    // default or `Interval`'s. (`SmallPoly` accumulates `z·w` term by term,
+    // the same value whenever it is exact; near `2^126` its overflow marker
+    // may fall otherwise, which only sends the set-up to `ZPoly`, and the
+    // set-up's size test keeps these minors far below that.)
     let minor = |m: &mut R, r: usize, k: usize| {
         let (i, j) = COLUMN_PAIRS[k];
         let nonzero = |x: &R, y: &R| !x.is_zero() && !y.is_zero();
