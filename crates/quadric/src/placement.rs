@@ -90,12 +90,7 @@ fn scaled<R: RingOps>(s: &R, x: &Mat3<R>) -> Mat3<R> {
 /// (`n = |q|² > 0`, `w > 0`): `[[Rᵀ, −Rᵀc], [0, 1]]` times the positive
 /// factor `w·n`, i.e. `[[w·Mᵀ, −Mᵀ·C], [0, w·n]]`.
 pub fn rigid_inverse<R: RingOps>(m: &Mat3<R>, n: &R, center: &[R; 3], w: &R) -> Mat4<R> {
-    inverse_block(
-        w,
-        |i, j| &m[j][i],
-        center,
-        |corner| corner.set_product(w, n),
-    )
+    inverse_block(w, |i, j| &m[j][i], center, w.times(n))
 }
 
 /// `[[s·X, −X·v], [0, corner]]` with `X = (x(i, j))`, built where it is
@@ -107,7 +102,7 @@ fn inverse_block<'a, R: RingOps + 'a>(
     s: &R,
     x: impl Fn(usize, usize) -> &'a R,
     v: &[R; 3],
-    corner: impl FnOnce(&mut R),
+    corner: R,
 ) -> Mat4<R> {
     let mut out: Mat4<R> = std::array::from_fn(|_| std::array::from_fn(|_| R::zero()));
     for (i, row) in out.iter_mut().take(3).enumerate() {
@@ -120,7 +115,7 @@ fn inverse_block<'a, R: RingOps + 'a>(
         }
         row[3] = t.negated();
     }
-    corner(&mut out[3][3]);
+    out[3][3] = corner;
     out
 }
 
@@ -146,7 +141,7 @@ pub fn affine_placement<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
 /// `[[L, d], [0, w]]`, which is `[[w·adj L, −adj(L)·d], [0, det L]]`.
 pub fn affine_inverse<R: RingOps>(l: &Mat3<R>, d: &[R; 3], w: &R) -> Mat4<R> {
     let adj = adj3(l);
-    inverse_block(w, |i, j| &adj[i][j], d, |corner| *corner = det3(l))
+    inverse_block(w, |i, j| &adj[i][j], d, det3(l))
 }
 
 /// The body quadric `diag(1/r0², 1/r1², 1/r2², −1)` times the positive
