@@ -29,7 +29,7 @@
 use ccd_arith::{BigInterval, Dual, DwBall, Dyadic, Int, Interval, Jet2, Rat, RingOps};
 use ccd_motion::CharPoly;
 use ccd_poly::{Residues, SmallPoly, ZPoly};
-use ccd_solver::{ball_horner, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
+use ccd_solver::{ball_horner, ball_value, ball_view, BallJet, ExactJet, ScaledPoly, SignModel};
 use ccd_subres::{closed_form, homogeneous_degree, isobaric_weight, Quantity};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -546,12 +546,17 @@ impl ClosedForm {
             }
         }
         let x = DwBall::exactly(m)?;
-        let balls = self.f.balls.get_or_init(|| {
-            std::array::from_fn(|k| ball_view(&self.f.f.coeffs[k], self.f.view_shift(k)))
-        });
+        let balls = self.coefficient_balls();
         let jets: [Dual<DwBall>; 5] = std::array::from_fn(|k| ball_horner(&balls[k], &x));
         *self.f.last_ball.borrow_mut() = Some((m.clone(), jets));
         Some(jets)
+    }
+
+    /// The views' coefficients in double-word balls (formed on first need).
+    fn coefficient_balls(&self) -> &[Vec<DwBall>; 5] {
+        self.f.balls.get_or_init(|| {
+            std::array::from_fn(|k| ball_view(&self.f.f.coeffs[k], self.f.view_shift(k)))
+        })
     }
 
     /// Enclosures of `f_k` over `x` (scaled), cached for the last `x`
@@ -601,14 +606,13 @@ impl ClosedForm {
     /// ([`balancing`], by the sizes `log2` of the values), jet `i` times
     /// `2^k` given by `scaled(i, k)`: the result `r` and the exponent
     /// `undo` with `Q = 2^undo·r`.
-    fn balanced_of(
+    fn balanced_of<R: RingOps>(
         &self,
         log2: impl Fn(usize) -> Option<f64>,
-        scaled: impl Fn(usize, i64) -> Dual<DwBall>,
-    ) -> (Dual<DwBall>, i64) {
+        scaled: impl Fn(usize, i64) -> R,
+    ) -> (R, i64) {
         let (e, g) = balancing(log2);
-        let balanced: [Dual<DwBall>; 5] =
-            std::array::from_fn(|i| scaled(i, e * (4 - i as i64) + g));
+        let balanced: [R; 5] = std::array::from_fn(|i| scaled(i, e * (4 - i as i64) + g));
         let undo = -e * isobaric_weight(self.q) as i64 - g * weight(self.q);
         (self.of(&balanced), undo)
     }
@@ -692,6 +696,21 @@ impl SignModel for ClosedForm {
             value_exp: scale,
             slope_exp: scale,
         })
+    }
+
+    /// The closed form over double-word balls of `f_k(x)` alone (Horner
+    /// without the derivatives), balanced like [`SignModel::ball_jet_at`]:
+    /// the sign of `q(x)` where the ball excludes zero, at about half the
+    /// jet's cost.
+    fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
+        let xb = DwBall::exactly(x)?;
+        let balls = self.coefficient_balls();
+        let values: [DwBall; 5] = std::array::from_fn(|k| ball_value(&balls[k], &xb));
+        let (q, _) = self.balanced_of(
+            |i| (values[i].hi != 0.0).then(|| values[i].hi.abs().log2()),
+            |i, k| values[i].mul_pow2(k),
+        );
+        q.sign().filter(|s| *s != 0)
     }
 
     /// The closed form of the exact jets `(F_k, G_k)` at `m` (cached for
@@ -1071,6 +1090,12 @@ mod tests {
                     prop_assert!(in_ball(ball.slope, &slope));
                     prop_assert_eq!(ball.slope_exp, model.exact_jet_at(&m).slope_exp);
                 }
+                // The value-only ball's sign, where it decides, is the
+                // exact one; and it decides wherever the jet's value does.
+                let sign = model.ball_sign_at(&m);
+                prop_assert!(sign.is_none() || sign == Some(exact.sign_at(&m)), "{:?} at {}", q, m);
+                let jet_sign = ball.and_then(|b| b.value.sign()).filter(|s| *s != 0);
+                prop_assert!(jet_sign.is_none() || sign == jet_sign, "{:?} at {}", q, m);
                 let point = Interval::from_rat(&m);
                 if point.lo == point.hi {
                     prop_assert!(holds(model.enclose(point), sigma(exact.eval_rat(&m))));

@@ -28,7 +28,9 @@ mod scaled;
 pub use ball::JetBall;
 pub use isolate::{RootIter, MAX_EXACT_WORK};
 pub use local::LOCAL_WORTH;
-pub use model::{ball_horner, ball_view, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH};
+pub use model::{
+    ball_horner, ball_value, ball_view, BallJet, ExactJet, SignModel, SignProbe, BALL_WORTH,
+};
 pub use root::RealRoot;
 pub use scaled::ScaledPoly;
 

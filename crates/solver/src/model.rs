@@ -72,6 +72,20 @@ impl SignProbe {
         }
     }
 
+    /// The balls of `q·2^(−shift)` (formed on first need); `None` for a
+    /// short `q` (below [`BALL_WORTH`]), whose exact Horner pass costs
+    /// less than the balls' bookkeeping.
+    fn ball_coefficients(&self) -> Option<&[DwBall]> {
+        let n = self.q.degree().unwrap_or(0) as u64;
+        if (n + 1) * self.q.max_bits() < BALL_WORTH {
+            return None;
+        }
+        Some(
+            self.balls
+                .get_or_init(|| ball_view(&self.q, self.sq.shift())),
+        )
+    }
+
     /// `read` on the re-centred model at a costly point `x`: the model kept,
     /// or, at the [`LOCAL_MISSES`]th costly point in a row it did not
     /// decide, a new one next to `x = a/2^k` ([`Local::near`]). `None` for
@@ -174,6 +188,17 @@ pub fn ball_horner<B: RingOps>(coeffs: &[B], x: &B) -> Dual<B> {
     Dual { v, d }
 }
 
+/// `p(x)` by Horner's rule over balls (or any ring of enclosures), for
+/// coefficients low → high (zero for none): [`ball_horner`]'s value alone.
+pub fn ball_value<B: RingOps>(coeffs: &[B], x: &B) -> B {
+    let mut it = coeffs.iter().rev();
+    let mut v = it.next().cloned().unwrap_or_else(B::zero);
+    for c in it {
+        v = v.times(x).plus(c);
+    }
+    v
+}
+
 /// The coefficients of `p·2^(−shift)` as balls (low → high).
 pub fn ball_view(p: &ZPoly, shift: i64) -> Vec<DwBall> {
     p.coeffs()
@@ -227,6 +252,14 @@ pub trait SignModel {
     /// decide. `None` (the default) when the model has no such view.
     fn ball_jet_at(&self, _m: &Rat) -> Option<BallJet> {
         None
+    }
+    /// The sign of `q(x)` at a dyadic `x` when a double-word ball of it
+    /// excludes zero; `None` otherwise. The default reads the value of
+    /// [`SignModel::ball_jet_at`].
+    fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
+        self.ball_jet_at(x)
+            .and_then(|jet| jet.value.sign())
+            .filter(|s| *s != 0)
     }
     /// `σ·q(m)` and `σ·q′(m)` in multi-precision intervals of about `prec`
     /// bits or more, for a dyadic `m`: what [`RealRoot`](crate::RealRoot)
@@ -300,6 +333,9 @@ impl<T: SignModel> SignModel for Arc<T> {
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
         (**self).ball_jet_at(m)
     }
+    fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
+        (**self).ball_sign_at(x)
+    }
     fn big_jet_at(&self, m: &Rat, prec: u32) -> Option<BallJet<BigInterval>> {
         (**self).big_jet_at(m, prec)
     }
@@ -351,24 +387,26 @@ impl SignModel for SignProbe {
         }
     }
     /// Horner over the balls of `q·2^(−shift)` at an exact ball of `m`;
-    /// `None` for a short `q` (below [`BALL_WORTH`]), whose exact Horner
-    /// pass costs less than the balls' bookkeeping.
+    /// `None` for a short `q` (below [`BALL_WORTH`]).
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
         let n = self.q.degree().unwrap_or(0) as i64;
-        if (n as u64 + 1) * self.q.max_bits() < BALL_WORTH {
-            return None;
-        }
         let k = m.dyadic_exponent()? as i64;
         let x = DwBall::exactly(m)?;
         let shift = self.sq.shift();
-        let balls = self.balls.get_or_init(|| ball_view(&self.q, shift));
-        let jet = ball_horner(balls, &x);
+        let jet = ball_horner(self.ball_coefficients()?, &x);
         (jet.v.is_known() && jet.d.is_known()).then_some(BallJet {
             value: jet.v,
             slope: jet.d,
             value_exp: shift + k * n,
             slope_exp: shift + k * (n - 1).max(0),
         })
+    }
+    /// Horner over the same balls, the value alone.
+    fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
+        let xb = DwBall::exactly(x)?;
+        ball_value(self.ball_coefficients()?, &xb)
+            .sign()
+            .filter(|s| *s != 0)
     }
     /// `q(m) = H/b^n` and `q′(m) = H′/b^(n−1)` for `m = a/b`, both exact
     /// from one Horner pass, then scaled like the `f64` view: by shifts at

@@ -133,6 +133,29 @@ fn pinned<B: JetBall>(ball: &B, exp: i64) -> Option<Interval> {
         .then(|| Interval::from_int_scaled(&n_min, exp))
 }
 
+/// `⌊a − 2^k·q(m)/q′(m)⌋` (`a = 2^k·m`) from a ball jet at `m`, when the
+/// slope's ball excludes zero and both ends of the quotient's ball give the
+/// same floor (then it is the exact jet's, [`exact_step_floor`]); `None`
+/// otherwise.
+fn step_floor<B: JetBall>(a: &Rat, k: i64, jet: &BallJet<B>) -> Option<Int> {
+    jet.slope.sign_of().filter(|s| *s != 0)?;
+    let (dl, dh) = jet.value.quotient(&jet.slope)?.scaled(k).end_points()?;
+    let n = (a - &dh).floor();
+    (n == (a - &dl).floor()).then_some(n)
+}
+
+/// `⌊2^k·(m − q(m)/q′(m))⌋` from the exact jet at the dyadic `m = a/2^j`
+/// (`q′(m) ≠ 0`): `(a·S·2^(k−j) − V·2^(k+s−v))/S` over a common power of
+/// two that keeps every exponent nonnegative, one integer division.
+fn exact_step_floor(m: &Rat, k: i64, jet: &ExactJet) -> Int {
+    let j = m.dyadic_exponent().expect("a dyadic point") as i64;
+    let (v, s) = (jet.value_exp, jet.slope_exp);
+    let lift = 0.max(j - k).max(v - s - k);
+    let shl = |x: &Int, e: i64| x.shl(e as u64);
+    (shl(&(m.numer() * &jet.slope), k - j + lift) - shl(&jet.value, k + s - v + lift))
+        .div_floor(&shl(&jet.slope, lift))
+}
+
 /// The Taylor remainder `ρ = sup|q″(I)|·r²/2` of one ball round
 /// ([`RealRoot::ball_round`]) and the ends of the `f64` test's remainder
 /// `[min(0, q″⁻), max(0, q″⁺)]·r²/2`, each rounded to the safe side.
@@ -401,6 +424,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// `target/4` is [`Jump::Resolved`]: another jump would only find the
     /// enclosure at the resolution (about 25K instructions a root for
     /// nothing).
+    ///
+    /// A target below that resolution is first tried in one step from `x`
+    /// itself ([`RealRoot::past_float_jump`]: a jet at `x` and two signs,
+    /// in double-word balls where they decide); the float cuts follow only
+    /// where it leaves the enclosure wider than the target.
     fn newton_jump(&mut self, target: &Rat) -> Jump {
         let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
         let Some((x, slope)) = float_newton(lo_f, hi_f, |x| self.base.approx_value_and_slope(x))
@@ -412,6 +440,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let eps = quarter
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
+        if quarter < eps && self.past_float_jump(x, target) {
+            return Jump::Progress;
+        }
         let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
             Rat::from_f64_exact(x - 2.0 * eps),
             Rat::from_f64_exact(x - eps),
@@ -436,6 +467,60 @@ impl<M: SignModel + Clone> RealRoot<M> {
         } else {
             Jump::Failed
         }
+    }
+
+    /// One Newton step past the root's float resolution, from the `f64`
+    /// Newton point `x` (a dyadic `m`), for a target `t` below that
+    /// resolution: on the grid `g = 2^(−k)`, `2^(3−k) ≤ t`, with `n = ⌊(m −
+    /// q(m)/q′(m))/g⌋` ([`RealRoot::newton_floor`]: double-word balls where
+    /// they pin it down), the enclosure is cut at `(n − 2)·g` and `(n +
+    /// 3)·g`, `5g < t` apart. Newton's error is quadratic in `m`'s, far
+    /// below `g` next to a simple root, so the root is between the cuts,
+    /// whose signs ([`RealRoot::cut_sign`]: a double-word ball of `q`,
+    /// else exact) prove it. `true` when the enclosure is then at most `t`
+    /// wide. One jet and two signs, where the float cuts at the resolution
+    /// and [`RealRoot::exact_newton_jump`] from their enclosure took two
+    /// float signs, a jet, an enclosure of `q″` and two signs.
+    fn past_float_jump(&mut self, x: f64, target: &Rat) -> bool {
+        let Some(m) = Rat::from_f64_exact(x) else {
+            return false;
+        };
+        let k = neg_log2(target) + 3;
+        let Some(n) = self.newton_floor(&m, k) else {
+            return false;
+        };
+        self.cut_both(
+            Rat::dyadic(&n - &Int::from(2), k as u64),
+            Rat::dyadic(&n + &Int::from(3), k as u64),
+            |root: &RealRoot<M>, x: &Rat| Some(root.cut_sign(x)),
+        );
+        self.sign_lo == 0 || self.width() <= *target
+    }
+
+    /// `⌊2^k·(m − q(m)/q′(m))⌋` at a dyadic `m`, from the model's
+    /// double-word jet ([`SignModel::ball_jet_at`]) or multi-precision one
+    /// ([`SignModel::big_jet_at`]) where its balls pin it down
+    /// ([`step_floor`]), else from the exact jet: the same integer from
+    /// every tier. `None` when `q′(m) = 0`.
+    fn newton_floor(&mut self, m: &Rat, k: i64) -> Option<Int> {
+        let a = m.mul_pow2(k);
+        if !self.balls_fail {
+            let jet = self.base.ball_jet_at(m);
+            if let Some(n) = jet.and_then(|jet| step_floor(&a, k, &jet)) {
+                return Some(n);
+            }
+            self.balls_fail = true;
+        }
+        let prec = u32::try_from(k + i64::from(NEWTON_BALL_MARGIN)).unwrap_or(u32::MAX);
+        if let Some(n) = self
+            .base
+            .big_jet_at(m, prec)
+            .and_then(|jet| step_floor(&a, k, &jet))
+        {
+            return Some(n);
+        }
+        let jet = self.base.exact_jet_at(m);
+        (!jet.slope.is_zero()).then(|| exact_step_floor(m, k, &jet))
     }
 
     /// Cuts at `a` and at `b` (each only if strictly inside and `sign`
@@ -482,7 +567,6 @@ impl<M: SignModel + Clone> RealRoot<M> {
     fn exact_newton_jump(&mut self, target: &Rat, w: &Rat) -> bool {
         let quarter = w * &Rat::from_frac(1, 4);
         let m = Rat::dyadic_in(&(&self.lo + &quarter), &(&self.hi - &quarter));
-        let j = m.dyadic_exponent().expect("dyadic_in is dyadic") as i64;
         let second = self.base.enclose_second(self.enclosure());
         if !self.balls_fail {
             if let Some(jet) = self.base.ball_jet_at(&m) {
@@ -511,14 +595,9 @@ impl<M: SignModel + Clone> RealRoot<M> {
         }
         let (_, slope) = jet.enclose();
         let k = newton_exponent(w, target, slope, second);
-        // 2^k·x = (a·S·2^(k−j) − V·2^(k+s−v))/S, over a common power of two
-        // that keeps every exponent nonnegative.
+        let x_scaled = exact_step_floor(&m, k, &jet);
         let (v, s) = (jet.value_exp, jet.slope_exp);
-        let lift = 0.max(j - k).max(v - s - k);
         let shl = |x: &Int, e: i64| x.shl(e as u64);
-        let x_scaled = (shl(&(m.numer() * &jet.slope), k - j + lift)
-            - shl(&jet.value, k + s - v + lift))
-        .div_floor(&shl(&jet.slope, lift));
         let taylor_sign = |root: &RealRoot<M>, x: &Rat| {
             let d = x - &m;
             let e = d.dyadic_exponent().expect("dyadics differ by a dyadic") as i64;
@@ -551,9 +630,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     #[cold]
     fn cut_sign(&self, x: &Rat) -> i32 {
         self.base
-            .ball_jet_at(x)
-            .and_then(|jet| jet.value.sign())
-            .filter(|s| *s != 0)
+            .ball_sign_at(x)
             .unwrap_or_else(|| self.base.sign_at(x))
     }
 
@@ -579,12 +656,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let slope = pinned(&jet.slope, jet.slope_exp)?;
         let k = newton_exponent(w, target, slope, second);
         // X = ⌊2^k·m − 2^k·δ⌋ with δ = σq(m)/σq′(m) in a ball.
-        let (dl, dh) = jet.value.quotient(&jet.slope)?.scaled(k).end_points()?;
-        let a = m.mul_pow2(k);
-        let x_scaled = (&a - &dh).floor();
-        if x_scaled != (&a - &dl).floor() {
-            return None;
-        }
+        let x_scaled = step_floor(&m.mul_pow2(k), k, jet)?;
         let ball_sign = |root: &RealRoot<M>, x: &Rat| {
             let d = x - m;
             let linear = jet.value.plus(&jet.slope.times(&jet.value.enclose_rat(&d)));
