@@ -144,6 +144,28 @@ fn step_floor<B: JetBall>(a: &Rat, k: i64, jet: &BallJet<B>) -> Option<Int> {
     (n == (a - &dl).floor()).then_some(n)
 }
 
+/// [`step_floor`] in `f64`, for a double-word jet at an `f64` point `x`
+/// with `|2^k·x| < 2^53`: the integer part `w` and the fraction `f` of
+/// `2^k·x` are then exact, and `⌊f − 2^k·δ⌋` is read off the quotient
+/// ball's rounded-outward `f64` ends, each subtraction widened by an ulp,
+/// when both give the same integer `e` (then `n = w + e`, the exact jet's);
+/// `None` otherwise, where the rational ends decide. No rational is formed.
+fn step_floor_f64(x: f64, k: i64, jet: &BallJet) -> Option<Int> {
+    jet.slope.sign().filter(|s| *s != 0)?;
+    let d = jet.value.quotient(&jet.slope)?.scaled(k);
+    // 2^k·x exactly (a power-of-two scaling; inf or NaN past the range).
+    let a = x * 2f64.powi(i32::try_from(k).ok()?.min(1100));
+    if !a.is_finite() || a.abs() >= 2f64.powi(53) {
+        return None;
+    }
+    let whole = a.floor();
+    let frac = a - whole;
+    let (lo, hi) = ((frac - d.upper()).next_down(), (frac - d.lower()).next_up());
+    let e = lo.floor();
+    (e == hi.floor() && e.abs() < 2f64.powi(53))
+        .then(|| &Int::from(whole as i64) + &Int::from(e as i64))
+}
+
 /// `⌊2^k·(m − q(m)/q′(m))⌋` from the exact jet at the dyadic `m = a/2^j`
 /// (`q′(m) ≠ 0`): `(a·S·2^(k−j) − V·2^(k+s−v))/S` over a common power of
 /// two that keeps every exponent nonnegative, one integer division.
@@ -486,7 +508,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             return false;
         };
         let k = neg_log2(target) + 3;
-        let Some(n) = self.newton_floor(&m, k) else {
+        let Some(n) = self.newton_floor(x, &m, k) else {
             return false;
         };
         self.cut_both(
@@ -497,16 +519,18 @@ impl<M: SignModel + Clone> RealRoot<M> {
         self.sign_lo == 0 || self.width() <= *target
     }
 
-    /// `⌊2^k·(m − q(m)/q′(m))⌋` at a dyadic `m`, from the model's
+    /// `⌊2^k·(m − q(m)/q′(m))⌋` at the dyadic `m = x`, from the model's
     /// double-word jet ([`SignModel::ball_jet_at`]) or multi-precision one
     /// ([`SignModel::big_jet_at`]) where its balls pin it down
     /// ([`step_floor`]), else from the exact jet: the same integer from
     /// every tier. `None` when `q′(m) = 0`.
-    fn newton_floor(&mut self, m: &Rat, k: i64) -> Option<Int> {
+    fn newton_floor(&mut self, x: f64, m: &Rat, k: i64) -> Option<Int> {
         let a = m.mul_pow2(k);
         if !self.balls_fail {
             let jet = self.base.ball_jet_at(m);
-            if let Some(n) = jet.and_then(|jet| step_floor(&a, k, &jet)) {
+            let pinned =
+                |jet: BallJet| step_floor_f64(x, k, &jet).or_else(|| step_floor(&a, k, &jet));
+            if let Some(n) = jet.and_then(pinned) {
                 return Some(n);
             }
             self.balls_fail = true;
