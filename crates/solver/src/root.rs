@@ -340,10 +340,12 @@ pub struct RealRoot<M: SignModel + Clone = Arc<SignProbe>> {
     /// Sign of `p(lo)`; 0 when the root is exact.
     sign_lo: i32,
     /// Whether a double-word Newton step has failed to pin down an exact
-    /// one here ([`RealRoot::exact_newton_jump`]): the steps after it are
-    /// closer to the root, where `p(m)` cancels further, so they go
-    /// straight to the multi-precision or exact jet. (A cue for speed
-    /// only: the ball step decides only what the exact one would.)
+    /// one here ([`RealRoot::exact_newton_jump`], or the step of
+    /// [`RealRoot::past_float_jump`], on a grid within the balls' reach):
+    /// the steps after it are closer to the root, where `p(m)` cancels
+    /// further, so they go straight to the multi-precision or exact jet. (A
+    /// cue for speed only: the ball step decides only what the exact one
+    /// would.)
     balls_fail: bool,
 }
 
@@ -462,8 +464,13 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let eps = quarter
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
-        if quarter < eps && self.past_float_jump(x, target) {
-            return Jump::Progress;
+        let (mut lo_f, mut hi_f) = (lo_f, hi_f);
+        if quarter < eps {
+            if self.past_float_jump(x, target) {
+                return Jump::Progress;
+            }
+            // It may have moved an end.
+            (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
         }
         let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
             Rat::from_f64_exact(x - 2.0 * eps),
@@ -503,11 +510,20 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// wide. One jet and two signs, where the float cuts at the resolution
     /// and [`RealRoot::exact_newton_jump`] from their enclosure took two
     /// float signs, a jet, an enclosure of `q″` and two signs.
+    ///
+    /// The step reaches about `(x − α)²·|q″/2q′|`, at best about the square
+    /// of `x`'s ulp: it is not tried for a grid finer than `2^(−96)·|x|`
+    /// (there both cuts would fall on one side of the root, and the
+    /// double-word balls could not pin `n` anyway), which is left to the
+    /// float cuts and the exact Newton steps, whose bits double.
     fn past_float_jump(&mut self, x: f64, target: &Rat) -> bool {
+        let k = neg_log2(target) + 3;
+        if k as f64 > 96.0 - x.abs().max(f64::MIN_POSITIVE).log2() {
+            return false;
+        }
         let Some(m) = Rat::from_f64_exact(x) else {
             return false;
         };
-        let k = neg_log2(target) + 3;
         let Some(n) = self.newton_floor(x, &m, k) else {
             return false;
         };
@@ -644,13 +660,14 @@ impl<M: SignModel + Clone> RealRoot<M> {
         )
     }
 
-    /// The exact sign of `p` at an exact Newton step's cut `x` (a dyadic
-    /// next to the root) where its Taylor form did not decide: the model's
-    /// double-word value of `p(x)` ([`SignModel::ball_jet_at`]) when its
-    /// ball excludes zero, else [`SignModel::sign_at`]. The Taylor form's
-    /// remainder comes from an enclosure of `p″` over the whole enclosure,
-    /// often far wider than `p″` itself; the ball at `x` has no remainder,
-    /// and costs a fraction of the exact evaluation.
+    /// The exact sign of `p` at a cut `x` next to the root (of
+    /// [`RealRoot::past_float_jump`], or of an exact Newton step where its
+    /// Taylor form did not decide): the model's double-word value of `p(x)`
+    /// ([`SignModel::ball_sign_at`]) when its ball excludes zero, else
+    /// [`SignModel::sign_at`]. The Taylor form's remainder comes from an
+    /// enclosure of `p″` over the whole enclosure, often far wider than
+    /// `p″` itself; the ball at `x` has no remainder, and costs a fraction
+    /// of the exact evaluation.
     #[cold]
     fn cut_sign(&self, x: &Rat) -> i32 {
         self.base

@@ -695,6 +695,36 @@ fn sign_rounds_narrow_a_bounded_number_of_steps() {
     assert!(r.lo() <= &alpha && &alpha <= r.hi());
 }
 
+/// Refining to `10^(−400)`, far past what one Newton step from the `f64`
+/// Newton point reaches (about the square of its ulp): the
+/// roots of a polynomial with 160-bit coefficients take at most 20 exact
+/// evaluations each (jets and signs; 10 each now, 27 for all three before
+/// the step past the float resolution existed). Found by review: tried at every target,
+/// that step put both cuts on one side of the root, and the lopsided ends
+/// (denominators past `2^1024`, whose `f64` enclosure is the whole line)
+/// sent the exact steps to bisection: 981 evaluations.
+#[test]
+fn refining_past_the_double_word_reach_takes_the_exact_steps() {
+    let (p, _) = near_roots(vec![(1, 3), (5, 7), (2, 9)], 100, 1, 0, 0);
+    let target = Rat::new(Int::one(), Int::pow10(400)).unwrap();
+    let roots = all_roots(&p, &Rat::zero(), &Rat::one());
+    assert_eq!(roots.len(), 3);
+    for root in roots {
+        let base = ExactOnly(std::sync::Arc::new(crate::SignProbe::new(root.poly())));
+        let sign_lo = root.poly().sign_at(root.lo());
+        let mut r =
+            crate::RealRoot::isolated(base.clone(), root.lo().clone(), root.hi().clone(), sign_lo);
+        r.refine_to(&target);
+        assert!(r.width() <= target);
+        assert!(p.sign_at(r.lo()) * p.sign_at(r.hi()) < 0);
+        assert!(
+            base.calls.exact() <= 20,
+            "{} exact evaluations",
+            base.calls.exact()
+        );
+    }
+}
+
 /// `n/2^k` plus a fraction of the next cell with a long denominator: an
 /// end with about four times the bits its interval's width `2^(−k)` needs,
 /// as Newton steps next to a cluster leave them.
