@@ -1107,6 +1107,56 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// Roots of each closed form, isolated and refined through its
+        /// model (the step past the float resolution from the model's
+        /// double-word jet, its cuts signed by value-only balls, and the
+        /// exact steps below it): every enclosure meets the target and
+        /// holds a sign change of the exact polynomial (or is its exact
+        /// root), at `10^(−15)` and `10^(−40)`, with the coefficients' sizes
+        /// up to `2^800` apart (`tilt`, as above).
+        #[test]
+        fn closed_form_roots_refine_to_enclosures_of_the_exact_roots(
+            raw in proptest::collection::vec(proptest::collection::vec(-40i64..40, 1..5), 5),
+            tilt in -200i64..200, deep in any::<bool>(),
+        ) {
+            let lift = |i: u64| if tilt >= 0 { tilt as u64 * (4 - i) } else { tilt.unsigned_abs() * i };
+            let coeffs: [ZPoly; 5] = std::array::from_fn(|k| {
+                ZPoly::new(poly(&raw[k]).coeffs().iter().map(|c| c.shl(lift(k as u64))).collect())
+            });
+            let f = Rc::new(Coefficients::new(CharPoly { coeffs: coeffs.clone() }));
+            let inv = closed_forms(&coeffs);
+            let target = Rat::new(Int::one(), Int::pow10(if deep { 40 } else { 15 })).expect("nonzero");
+            let (zero, one) = (Rat::zero(), Rat::one());
+            for q in [Quantity::Sr22, Quantity::Sr20, Quantity::Sr11, Quantity::Sr10, Quantity::Sr0] {
+                let exact = inv.get(q).expect("a polynomial");
+                // The model's function must be squarefree, of positive degree.
+                if exact.degree().unwrap_or(0) == 0 || exact.squarefree_part().degree() != exact.degree() {
+                    continue;
+                }
+                let b = ccd_poly::Bernstein::from_power(exact, &zero, &one);
+                let sign = b.scale().signum();
+                let enclosed: Vec<Interval> = b
+                    .coeffs()
+                    .iter()
+                    .map(|c| Interval::from_int(&(c * &Int::from(sign))))
+                    .collect();
+                for mut root in ccd_solver::RootIter::filtered(model(&f, q), &zero, &one, &enclosed) {
+                    root.refine_to(&target);
+                    prop_assert!(root.width() <= target, "{:?}: {}", q, root.width());
+                    let (lo, hi) = (root.lo(), root.hi());
+                    let held = if lo == hi {
+                        exact.sign_at(lo) == 0
+                    } else {
+                        exact.sign_at(lo) * exact.sign_at(hi) < 0
+                    };
+                    prop_assert!(held, "{:?}: [{}, {}]", q, lo, hi);
+                }
+            }
+        }
+    }
+
+    proptest! {
         // Cheap cases (about a fifth reach a triple-root hint).
         #![proptest_config(ProptestConfig::with_cases(256))]
         /// `sr0 ≡ 0` decided without forming `sr0` is the formed answer. The
