@@ -541,11 +541,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// ([`step_floor`]), else from the exact jet: the same integer from
     /// every tier. `None` when `q′(m) = 0`.
     fn newton_floor(&mut self, x: f64, m: &Rat, k: i64) -> Option<Int> {
-        let a = m.mul_pow2(k);
         if !self.balls_fail {
             let jet = self.base.ball_jet_at(m);
-            let pinned =
-                |jet: BallJet| step_floor_f64(x, k, &jet).or_else(|| step_floor(&a, k, &jet));
+            let pinned = |jet: BallJet| {
+                step_floor_f64(x, k, &jet).or_else(|| step_floor(&m.mul_pow2(k), k, &jet))
+            };
             if let Some(n) = jet.and_then(pinned) {
                 return Some(n);
             }
@@ -555,7 +555,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         if let Some(n) = self
             .base
             .big_jet_at(m, prec)
-            .and_then(|jet| step_floor(&a, k, &jet))
+            .and_then(|jet| step_floor(&m.mul_pow2(k), k, &jet))
         {
             return Some(n);
         }
@@ -668,7 +668,6 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// enclosure of `p″` over the whole enclosure, often far wider than
     /// `p″` itself; the ball at `x` has no remainder, and costs a fraction
     /// of the exact evaluation.
-    #[cold]
     fn cut_sign(&self, x: &Rat) -> i32 {
         self.base
             .ball_sign_at(x)
