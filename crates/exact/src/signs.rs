@@ -353,6 +353,12 @@ impl Coefficients {
     }
 }
 
+/// [`balancing`]'s size of a double-word ball: `log2` of its leading
+/// word, `None` for a zero one.
+fn ball_log2(b: &DwBall) -> Option<f64> {
+    (b.hi != 0.0).then(|| b.hi.abs().log2())
+}
+
 /// The balancing of the coefficients `a_k` of `λ^k` (`log2 |a_k|` by
 /// `log2(4 − k)`, `None` for zero) before a closed form in `f64`-ranged
 /// balls: `λ → 2^e·λ` balances the highest and lowest nonzero ones
@@ -679,7 +685,7 @@ impl SignModel for ClosedForm {
         let j = m.dyadic_exponent()? as i64;
         let jets = self.ball_jets(m)?;
         let (q, undo) = self.balanced_of(
-            |i| (jets[i].v.hi != 0.0).then(|| jets[i].v.hi.abs().log2()),
+            |i| ball_log2(&jets[i].v),
             |i, k| Dual {
                 v: jets[i].v.mul_pow2(k),
                 d: jets[i].d.mul_pow2(k),
@@ -706,10 +712,7 @@ impl SignModel for ClosedForm {
         let xb = DwBall::exactly(x)?;
         let balls = self.coefficient_balls();
         let values: [DwBall; 5] = std::array::from_fn(|k| ball_value(&balls[k], &xb));
-        let (q, _) = self.balanced_of(
-            |i| (values[i].hi != 0.0).then(|| values[i].hi.abs().log2()),
-            |i, k| values[i].mul_pow2(k),
-        );
+        let (q, _) = self.balanced_of(|i| ball_log2(&values[i]), |i, k| values[i].mul_pow2(k));
         q.sign().filter(|s| *s != 0)
     }
 

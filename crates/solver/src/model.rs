@@ -389,11 +389,12 @@ impl SignModel for SignProbe {
     /// Horner over the balls of `q·2^(−shift)` at an exact ball of `m`;
     /// `None` for a short `q` (below [`BALL_WORTH`]).
     fn ball_jet_at(&self, m: &Rat) -> Option<BallJet> {
+        let balls = self.ball_coefficients()?;
         let n = self.q.degree().unwrap_or(0) as i64;
         let k = m.dyadic_exponent()? as i64;
         let x = DwBall::exactly(m)?;
         let shift = self.sq.shift();
-        let jet = ball_horner(self.ball_coefficients()?, &x);
+        let jet = ball_horner(balls, &x);
         (jet.v.is_known() && jet.d.is_known()).then_some(BallJet {
             value: jet.v,
             slope: jet.d,
@@ -403,8 +404,8 @@ impl SignModel for SignProbe {
     }
     /// Horner over the same balls, the value alone.
     fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
-        let xb = DwBall::exactly(x)?;
-        ball_value(self.ball_coefficients()?, &xb)
+        let balls = self.ball_coefficients()?;
+        ball_value(balls, &DwBall::exactly(x)?)
             .sign()
             .filter(|s| *s != 0)
     }

@@ -454,7 +454,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// in double-word balls where they decide); the float cuts follow only
     /// where it leaves the enclosure wider than the target.
     fn newton_jump(&mut self, target: &Rat) -> Jump {
-        let (lo_f, hi_f) = (self.lo.to_f64(), self.hi.to_f64());
+        let (mut lo_f, mut hi_f) = (self.lo.to_f64(), self.hi.to_f64());
         let Some((x, slope)) = float_newton(lo_f, hi_f, |x| self.base.approx_value_and_slope(x))
         else {
             return Jump::Failed;
@@ -464,7 +464,6 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let eps = quarter
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
-        let (mut lo_f, mut hi_f) = (lo_f, hi_f);
         if quarter < eps {
             if self.past_float_jump(x, target) {
                 return Jump::Progress;
