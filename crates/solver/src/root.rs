@@ -540,10 +540,12 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// ([`step_floor`]), else from the exact jet: the same integer from
     /// every tier. `None` when `q′(m) = 0`.
     fn newton_floor(&mut self, x: f64, m: &Rat, k: i64) -> Option<Int> {
+        // `2^k·m`, formed only where the `f64` pin does not decide.
+        let scaled = || m.mul_pow2(k);
         if !self.balls_fail {
             let jet = self.base.ball_jet_at(m);
             let pinned = |jet: BallJet| {
-                step_floor_f64(x, k, &jet).or_else(|| step_floor(&m.mul_pow2(k), k, &jet))
+                step_floor_f64(x, k, &jet).or_else(|| step_floor(&scaled(), k, &jet))
             };
             if let Some(n) = jet.and_then(pinned) {
                 return Some(n);
@@ -554,7 +556,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
         if let Some(n) = self
             .base
             .big_jet_at(m, prec)
-            .and_then(|jet| step_floor(&m.mul_pow2(k), k, &jet))
+            .and_then(|jet| step_floor(&scaled(), k, &jet))
         {
             return Some(n);
         }

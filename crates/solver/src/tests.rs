@@ -696,13 +696,13 @@ fn sign_rounds_narrow_a_bounded_number_of_steps() {
 }
 
 /// Refining to `10^(−400)`, far past what one Newton step from the `f64`
-/// Newton point reaches (about the square of its ulp): the
-/// roots of a polynomial with 160-bit coefficients take at most 20 exact
-/// evaluations each (jets and signs; 10 each now, 27 for all three before
-/// the step past the float resolution existed). Found by review: tried at every target,
-/// that step put both cuts on one side of the root, and the lopsided ends
+/// Newton point reaches (about the square of its ulp): the roots of a
+/// polynomial with 160-bit coefficients take at most 20 exact evaluations
+/// each (jets and signs; 10 each, as before the step past the float
+/// resolution existed). Found by review: tried at every target, that step
+/// put both cuts on one side of the root, and the lopsided ends
 /// (denominators past `2^1024`, whose `f64` enclosure is the whole line)
-/// sent the exact steps to bisection: 981 evaluations.
+/// sent the exact steps to bisection: 909 evaluations for the first root.
 #[test]
 fn refining_past_the_double_word_reach_takes_the_exact_steps() {
     let (p, _) = near_roots(vec![(1, 3), (5, 7), (2, 9)], 100, 1, 0, 0);
