@@ -42,7 +42,10 @@ use crate::matrices::{
 };
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
-use ccd_quadric::{characteristic, is_affine_placement, placed_characteristic, Mat4};
+use ccd_quadric::{
+    characteristic, is_affine_placement, placed_characteristic, rigid_characteristic,
+    rigid_characteristic_degree, rigid_values, Mat4, RigidFrame,
+};
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
 /// `u = (t − t0)/(t1 − t0) ∈ [0, 1]`.
@@ -93,7 +96,15 @@ impl CharPoly {
         }
         // Both routes first in i128 (short decimal inputs fit), exactly
         // in ZPoly if a number does not.
-        let f = if through_quadrics(a, b) {
+        let long = a.bits().max(b.bits()) > SMALL_BODY_BITS;
+        // Two rigid bodies: from their relative placement, scaled as the
+        // quadrics' route below scales f (for long bodies, once the
+        // quadrics do not fit i128, as its Cauchy–Binet on the inverse
+        // placements does).
+        let relative = |scaling| rigid_quartic(a, b, scaling);
+        let f = if let Some(f) = (!long).then(|| relative(Scaling::Quadrics)).flatten() {
+            f
+        } else if through_quadrics(a, b) {
             // The quadrics themselves in i128 when they fit (they usually
             // do when f does).
             let (sa, sb) = (a.quadric_small(), b.quadric_small());
@@ -106,8 +117,9 @@ impl CharPoly {
             small.map(Quartic::Small).unwrap_or_else(|| {
                 // Long bodies: Cauchy–Binet on the inverse placements, whose
                 // columns lose their contents first.
-                if a.bits().max(b.bits()) > SMALL_BODY_BITS {
-                    return Quartic::Exact(inverse_characteristic(a, b));
+                if long {
+                    return relative(Scaling::InversePlacements)
+                        .unwrap_or_else(|| Quartic::Exact(inverse_characteristic(a, b)));
                 }
                 let (qa, qb) = (a.quadric(), b.quadric());
                 worth_small(sizes(&[&qa, &qb]), 4)
@@ -457,6 +469,129 @@ fn centred_quartic(a: &PlacedQuadric, b: &PlacedQuadric) -> Option<Quartic> {
         }
         _ => over_int(),
     }
+}
+
+/// Which of [`CharPoly::from_placed`]'s routes [`rigid_quartic`] scales
+/// `f` like: both give the same normalised `f` as that route, since the
+/// normalisation takes out a positive constant and powers of `det A`,
+/// `det B`'s factors but not a constant rescaling of λ.
+#[derive(Clone, Copy)]
+enum Scaling {
+    /// The quadrics `NᵀDN` of the primitive inverse placements `N` and the
+    /// integer diagonals [`PlacedQuadric::diagonal`].
+    Quadrics,
+    /// [`inverse_characteristic`]: the primitive inverse placements with
+    /// the rational diagonals `diag(1/r², −1)` (its tables and column
+    /// contents only scale `f` by a positive constant).
+    InversePlacements,
+}
+
+/// `f` of two rigid bodies from their relative placement
+/// ([`rigid_characteristic`]), with the diagonals scaled so that it is the
+/// quartic of the `scaling` route up to a positive constant and powers of
+/// `n·w` (what the normalisation removes): with `g` the content that
+/// makes a body's inverse placement primitive, that route's quadric is
+/// `(n·w/g)²·N_ratᵀ·D·N_rat`, whose integer content `κ = cont(n·w)` is a
+/// constant rescaling of λ that the normalisation keeps, so `D_A` is taken
+/// times `(κ_A·g_B)²` and `D_B` times `(κ_B·g_A)²`. In `i128` when every number fits, else over [`ZPoly`];
+/// `None` for an affine body. `rigid-deg2`: coefficients of degree 4
+/// instead of 16, 12, 8, 4, 0.
+fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Option<Quartic> {
+    // The frames in i128 (numbers that do not fit come in overflowed).
+    let (sa, sb) = (
+        a.rigid_frame(SmallPoly::lowered)?,
+        b.rigid_frame(SmallPoly::lowered)?,
+    );
+    let [da, db]: [[Int; 4]; 2] = match scaling {
+        Scaling::Quadrics => [a, b].map(|body| body.diagonal.each_ref().map(|d| d.coeff(0))),
+        Scaling::InversePlacements => {
+            let (ra, rb) = (a.rational_diagonal(), b.rational_diagonal());
+            let beta: Int = ra
+                .iter()
+                .chain(&rb)
+                .fold(Int::one(), |l, x| l.lcm(x.denom()));
+            [ra, rb].map(|r| r.map(|x| beta.div_exact(x.denom()) * x.numer()))
+        }
+    };
+    // κ·g′ with κ the content of n·w (its primitive part is what the
+    // normalisation takes out) and g′ the other body's inverse content.
+    let (ka, kb) = (a.rotation_content(), b.rotation_content());
+    let (ga, gb) = (a.inverse_content(), b.inverse_content());
+    let scale = |d: [Int; 4], k: Int, g: &Int| {
+        let c = k * g;
+        if c.is_one() {
+            d
+        } else {
+            let c2 = &c * &c;
+            d.map(|x| x * &c2)
+        }
+    };
+    let (da, db) = (scale(da, ka, &gb), scale(db, kb, &ga));
+    // In i128 by values, else as polynomials when the numbers are likely
+    // to fit (every term is a product of eight frame numbers, summed over
+    // the products of their coefficients, and four diagonal entries; an
+    // overflow is detected anyway, this skips doomed attempts).
+    let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
+    let frame_bits = a.frame_bits().max(b.frame_bits());
+    let degree = a.degree_bounds().0.max(b.degree_bounds().0) as u64;
+    let diagonal_bits = da.iter().chain(&db).map(Int::bits).max().unwrap_or(0);
+    let likely =
+        8 * frame_bits + 4 * diagonal_bits + 8 * (64 - degree.leading_zeros() as u64) + 14 <= 126;
+    let small = by_values(&sa, &sb, &ta, &tb).or_else(|| {
+        likely
+            .then(|| exact(rigid_characteristic(&sa, &sb, &ta, &tb)))
+            .flatten()
+    });
+    Some(small.map_or_else(
+        || {
+            let [fa, fb] = [a, b].map(|body| body.rigid_frame(ZPoly::clone));
+            let (fa, fb) = (fa.expect("a rigid frame"), fb.expect("a rigid frame"));
+            Quartic::Exact(rigid_characteristic(&fa, &fb, &da, &db))
+        },
+        Quartic::Small,
+    ))
+}
+
+/// [`rigid_characteristic`] in `i128` by evaluation and interpolation:
+/// its value at `D + 1` integers `u` around 0 (`D` the degree bound of
+/// [`rigid_characteristic_degree`]) from the frames' values there, a few
+/// hundred word products each, then each coefficient interpolated
+/// ([`SmallPoly::interpolate`]). The same polynomials as over
+/// [`SmallPoly`] (an integer polynomial of degree at most `D` is its
+/// interpolant) at a fifth of the cost (`rigid-deg2`: `D = 4`); `None`
+/// when a number does not fit or `D` exceeds the capacity.
+fn by_values(
+    a: &RigidFrame<SmallPoly>,
+    b: &RigidFrame<SmallPoly>,
+    da: &[SmallInt; 4],
+    db: &[SmallInt; 4],
+) -> Option<[SmallPoly; 5]> {
+    let degree = |p: &SmallPoly| p.degree().unwrap_or(0);
+    let top = rigid_characteristic_degree(&a.map(degree), &b.map(degree));
+    if top > SmallPoly::MAX_DEGREE {
+        return None;
+    }
+    let first = -(top as i64 / 2);
+    let mut values = [[SmallInt::zero(); SmallPoly::MAX_DEGREE + 1]; 5];
+    let [da, db] = [da, db].map(|d| d.iter().map(SmallInt::to_i128).collect::<Option<Vec<_>>>());
+    let (da, db): ([i128; 4], [i128; 4]) = (da?.try_into().ok()?, db?.try_into().ok()?);
+    for (i, u) in (first..=first + top as i64).enumerate() {
+        let at = |f: &RigidFrame<SmallPoly>| {
+            let f = f.map(|p| p.value_at(u).to_i128());
+            let exact =
+                f.m.iter()
+                    .flatten()
+                    .chain(&f.center)
+                    .chain([&f.n, &f.w])
+                    .all(Option::is_some);
+            exact.then(|| f.map(|x| x.unwrap_or(0)))
+        };
+        let f = rigid_values(&at(a)?, &at(b)?, &da, &db)?;
+        for (column, v) in values.iter_mut().zip(f) {
+            column[i] = SmallInt::from_i128(v);
+        }
+    }
+    exact(values.map(|v| SmallPoly::interpolate(first, &v[..=top])))
 }
 
 /// `f = det(λA + B)` from one of the two routes of
@@ -1365,6 +1500,85 @@ mod tests {
                 let fast = CharPoly::from_placed(&pa, &pb);
                 proptest::prop_assert!(same_up_to_constant_scalings(&fast, &slow), "{fast:?} vs {slow:?}");
             }
+        }
+
+        /// Two rigid bodies (each turning by a quaternion curve of degree
+        /// 0 to 2, its centre on a rational curve, rational radii): the
+        /// relative placement's quartic ([`rigid_quartic`]) normalises to
+        /// the very polynomial of the quadrics' own route, bit for bit —
+        /// the normalisation takes out the powers of `n·w` and the
+        /// positive constant by which they differ. With `long`, every
+        /// number is stretched past 80 bits (times `10^30 + 1`, over
+        /// `10^30`), where the route it must match is the inverse
+        /// placements' Cauchy–Binet ([`inverse_characteristic`]).
+        #[test]
+        fn relative_placement_gives_the_quadrics_route(
+            quats in proptest::collection::vec(-3i64..4, 24),
+            centres in proptest::collection::vec(-5i64..6, 18),
+            weights in proptest::collection::vec(1i64..4, 6),
+            radii in proptest::collection::vec((1i64..9, 1i64..5), 6),
+            degrees in (0usize..3, 0usize..3),
+            long in proptest::bool::ANY,
+        ) {
+            use crate::kinds::{Bezier, Motion};
+            let stretch = |x: Rat| {
+                if long {
+                    let ten = Int::from(10).pow(30);
+                    &x * &Rat::new(&ten + &Int::one(), ten).expect("nonzero")
+                } else {
+                    x
+                }
+            };
+            let body = |k: usize, degree: usize| Body {
+                radii: std::array::from_fn(|i| {
+                    stretch(Rat::from_frac(radii[3 * k + i].0, radii[3 * k + i].1))
+                }),
+                motion: Motion::Rigid {
+                    orientation: Bezier {
+                        points: (0..=degree)
+                            .map(|p| std::array::from_fn(|i| {
+                                // Mostly away from zero, so few curves vanish.
+                                let base = if i == 0 { 4 } else { 0 };
+                                stretch(Rat::from(base + quats[12 * k + 4 * p + i]))
+                            }))
+                            .collect(),
+                        weights: None,
+                    },
+                    center: Bezier {
+                        points: (0..3)
+                            .map(|p| std::array::from_fn(|i| {
+                                Rat::from(centres[9 * k + 3 * p + i] + 6 * k as i64)
+                            }))
+                            .collect(),
+                        weights: Some((0..3).map(|p| Rat::from(weights[3 * k + p])).collect()),
+                    },
+                },
+            };
+            let span = [Rat::zero(), Rat::one()];
+            let (Ok(pa), Ok(pb)) = (
+                crate::matrices::placed_quadric(&body(0, degrees.0), &span),
+                crate::matrices::placed_quadric(&body(1, degrees.1), &span),
+            ) else {
+                return Err(proptest::test_runner::TestCaseError::reject("a degenerate motion"));
+            };
+            if !(pa.turns() || pb.turns()) {
+                // Bodies that never turn take the centred route.
+                return Err(proptest::test_runner::TestCaseError::reject("no turn"));
+            }
+            let candidates = pa
+                .det_factors
+                .iter()
+                .chain(&pb.det_factors)
+                .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
+                .collect();
+            let reference = if pa.bits().max(pb.bits()) > SMALL_BODY_BITS {
+                proptest::prop_assert!(long);
+                inverse_characteristic(&pa, &pb)
+            } else {
+                characteristic(&pa.quadric(), &pb.quadric())
+            };
+            let reference = CharPoly { coeffs: normalise_with(reference, candidates) };
+            proptest::prop_assert_eq!(CharPoly::from_placed(&pa, &pb), reference);
         }
 
         /// The Plücker route (affine bodies) against the adjugate quadrics

@@ -13,6 +13,7 @@ use ccd_poly::{SmallPoly, ZPoly};
 use ccd_quadric::{
     affine_inverse, affine_placement, body_diagonal, characteristic, congruence, det3, norm2,
     placed_characteristic, rigid_inverse, rigid_placement, rotation_numerator, Mat3, Mat4,
+    RigidFrame,
 };
 
 /// The first root of `p` in `[0, 1]`, mapped to `t` (approximately), if any.
@@ -543,6 +544,71 @@ impl PlacedQuadric {
         q.iter().flatten().all(SmallPoly::is_exact).then_some(q)
     }
 
+    /// The numbers of a rigid frame (`X = (M/n)·Y + C/w`), each mapped by
+    /// `lower`; `None` for an affine one.
+    pub(crate) fn rigid_frame<P>(&self, lower: impl Fn(&ZPoly) -> P) -> Option<RigidFrame<P>> {
+        let Frame::Rigid { m, n, center, w } = &self.frame else {
+            return None;
+        };
+        Some(RigidFrame {
+            m: m.each_ref().map(|row| row.each_ref().map(&lower)),
+            n: lower(n),
+            center: center.each_ref().map(&lower),
+            w: lower(w),
+        })
+    }
+
+    /// The integer content of the frame's inverse before
+    /// [`primitive_matrix`]: [`PlacedQuadric::inverse`] times it is
+    /// `rigid_inverse(M, n, C, w)` (`1` for an affine frame, which is not
+    /// asked). By Gauss's lemma the contents of `w·Mᵀ` and `w·n` are
+    /// products of contents; only the column `−Mᵀ·C` is formed, and only
+    /// when those leave a common factor.
+    pub(crate) fn inverse_content(&self) -> Int {
+        let Frame::Rigid { m, n, center, w } = &self.frame else {
+            return Int::one();
+        };
+        let g = content(
+            m.iter()
+                .flatten()
+                .chain([n])
+                .map(ZPoly::content)
+                .collect::<Vec<_>>()
+                .iter(),
+        );
+        let g = g * w.content();
+        if g.is_one() {
+            return g;
+        }
+        (0..3).fold(g, |g, i| {
+            if g.is_one() {
+                return g;
+            }
+            let column = (0..3).fold(ZPoly::zero(), |s, k| &s + &(&m[k][i] * &center[k]));
+            if column.is_zero() {
+                g
+            } else {
+                g.gcd(&column.content())
+            }
+        })
+    }
+
+    /// The integer content of `n·w` (a rigid frame; `1` for an affine
+    /// one): `cont(n)·cont(w)` by Gauss's lemma.
+    pub(crate) fn rotation_content(&self) -> Int {
+        match &self.frame {
+            Frame::Rigid { n, w, .. } => n.content() * w.content(),
+            Frame::Affine { .. } => Int::one(),
+        }
+    }
+
+    /// `diag(1/r₀², 1/r₁², 1/r₂², −1)`, the body quadric over ℚ.
+    pub(crate) fn rational_diagonal(&self) -> [Rat; 4] {
+        let inverse_square = |r: &Rat| &Rat::one() / &(r * r);
+        let [a, b, c] = self.radii.each_ref().map(inverse_square);
+        [a, b, c, -Rat::one()]
+    }
+
     /// Upper bounds `(deg M, deg N)` on the entries' degrees of
     /// [`PlacedQuadric::placement`] and [`PlacedQuadric::inverse`], without
     /// forming them: equal for rigid motions (`N` is a transpose), about
@@ -560,6 +626,12 @@ impl PlacedQuadric {
     /// The longest number of the placement (its integer frame) and body
     /// quadric, in bits: a size estimate.
     pub fn bits(&self) -> u64 {
+        let diagonal = self.diagonal.iter().map(ZPoly::max_bits).max().unwrap_or(0);
+        self.frame_bits().max(diagonal)
+    }
+
+    /// The longest number of the placement (its integer frame), in bits.
+    pub(crate) fn frame_bits(&self) -> u64 {
         let poly = ZPoly::max_bits;
         let frame = match &self.frame {
             Frame::Rigid { m, n, center, w } => m
@@ -571,8 +643,7 @@ impl PlacedQuadric {
                 .max(),
             Frame::Affine { l, d, w } => l.iter().flatten().chain(d).chain([w]).map(poly).max(),
         };
-        let diagonal = self.diagonal.iter().map(ZPoly::max_bits).max();
-        frame.max(diagonal).unwrap_or(0)
+        frame.unwrap_or(0)
     }
 
     /// Whether the body's orientation changes on the span (a rotating rigid

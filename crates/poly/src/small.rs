@@ -12,7 +12,7 @@
 //! big-integer allocations.
 
 use crate::ZPoly;
-use ccd_arith::{Int, RingOps, SmallInt};
+use ccd_arith::{Int, Ring, RingOps, SmallInt};
 
 /// Coefficient slots: degrees up to [`SmallPoly::MAX_DEGREE`].
 const CAP: usize = 17;
@@ -327,6 +327,116 @@ impl SmallPoly {
         }
     }
 
+    /// The value at the integer `u` (Horner, checked: an overflow marks
+    /// the value, as it does for an overflowed polynomial).
+    ///
+    /// ```
+    /// use ccd_arith::SmallInt;
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let p = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[1, -2, 3])).unwrap();
+    /// assert_eq!(p.value_at(-2), SmallInt::from_i128(17));
+    /// ```
+    pub fn value_at(&self, u: i64) -> SmallInt {
+        if self.overflow {
+            return SmallInt::overflowed();
+        }
+        let u = SmallInt::from_i64(u);
+        self.c[..self.len]
+            .iter()
+            .rev()
+            .fold(SmallInt::zero(), |v, &c| {
+                v.times(&u).plus(&SmallInt::from_i128(c))
+            })
+    }
+
+    /// The polynomial of degree below `values.len()` taking `values[i]` at
+    /// `u = first + i`, when its coefficients are integers (as for the
+    /// values of an integer polynomial of that degree): Newton's forward
+    /// differences `Δᵏv₀`, each divided exactly by `k!` (for an integer
+    /// polynomial `Δᵏ` of its values is a multiple of `k!`), then the
+    /// falling-factorial form expanded by Horner. Marked overflowed when a
+    /// number does not fit, a division is not exact (no integer
+    /// polynomial takes these values) or there are more values than the
+    /// capacity.
+    ///
+    /// ```
+    /// use ccd_arith::SmallInt;
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let p = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[5, 0, -4, 1])).unwrap();
+    /// let values: Vec<SmallInt> = (-2..2).map(|u| p.value_at(u)).collect();
+    /// assert_eq!(SmallPoly::interpolate(-2, &values), p);
+    /// // (u² + u)/2 takes 0, 1, 3 at 0, 1, 2: not an integer polynomial.
+    /// assert!(!SmallPoly::interpolate(0, &[0, 1, 3].map(SmallInt::from_i128)).is_exact());
+    /// ```
+    pub fn interpolate(first: i64, values: &[SmallInt]) -> SmallPoly {
+        let n = values.len();
+        if n > CAP || n == 0 {
+            return if n == 0 {
+                SmallPoly::zero()
+            } else {
+                SmallPoly::overflowed()
+            };
+        }
+        // d[k] ← Δᵏv₀ / k!.
+        let mut d = [SmallInt::zero(); CAP];
+        d[..n].copy_from_slice(values);
+        for k in 1..n {
+            for i in (k..n).rev() {
+                d[i] = d[i].minus(&d[i - 1]);
+            }
+        }
+        let mut factorial = SmallInt::one();
+        for (k, dk) in d.iter_mut().enumerate().take(n).skip(2) {
+            factorial = factorial.times(&SmallInt::from_i64(k as i64));
+            *dk = dk.div_exact(&factorial);
+        }
+        // Σ d[k]·Π_(j<k) (u − first − j), innermost first.
+        let mut q = [SmallInt::zero(); CAP];
+        q[0] = d[n - 1];
+        for k in (0..n - 1).rev() {
+            // q ← q·(u − (first + k)) + d[k]: degree n − 2 − k → n − 1 − k.
+            let shift = SmallInt::from_i64(first + k as i64);
+            let top = n - 1 - k;
+            for i in (1..=top).rev() {
+                q[i] = q[i - 1].minus(&q[i].times(&shift));
+            }
+            q[0] = d[k].minus(&q[0].times(&shift));
+        }
+        SmallPoly::build(q[..n].iter().map(SmallInt::to_i128), n)
+    }
+
+    /// `self ← self + s·q` for an integer `s`, checked: an overflow (of
+    /// `s` itself included) marks the result.
+    ///
+    /// ```
+    /// use ccd_arith::SmallInt;
+    /// use ccd_poly::{SmallPoly, ZPoly};
+    /// let mut p = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[1, 2])).unwrap();
+    /// let q = SmallPoly::from_zpoly(&ZPoly::from_i64s(&[0, 1, 1])).unwrap();
+    /// p.add_scaled(&SmallInt::from_i128(-3), &q);
+    /// assert_eq!(p.to_zpoly(), Some(ZPoly::from_i64s(&[1, -1, -3])));
+    /// // −3·(2^127 − 1) does not fit.
+    /// p.add_scaled(&SmallInt::from_i128(i128::MAX), &p.clone());
+    /// assert!(!p.is_exact());
+    /// ```
+    pub fn add_scaled(&mut self, s: &SmallInt, q: &SmallPoly) {
+        let Some(s) = s.to_i128().filter(|_| !self.overflow && !q.overflow) else {
+            *self = SmallPoly::overflowed();
+            return;
+        };
+        for (slot, &y) in self.c.iter_mut().zip(&q.c[..q.len]) {
+            match y.checked_mul(s).and_then(|p| slot.checked_add(p)) {
+                Some(v) => *slot = v,
+                None => {
+                    *self = SmallPoly::overflowed();
+                    return;
+                }
+            }
+        }
+        self.len = self.len.max(q.len);
+        self.trim();
+    }
+
     /// Coefficientwise `op`, overflow propagated.
     fn zip(&self, o: &SmallPoly, op: impl Fn(i128, i128) -> Option<i128>) -> SmallPoly {
         if self.overflow || o.overflow {
@@ -547,6 +657,40 @@ mod tests {
             slots[..c.len()].copy_from_slice(&c);
             let p = SmallPoly::from_array(slots, c.len());
             prop_assert_eq!(p.squared().to_zpoly(), p.times(&p).to_zpoly());
+        }
+
+        /// Interpolating the values at `deg + 1 + extra` consecutive
+        /// integers gives the polynomial back, whenever every number on
+        /// the way fits (values checked against the exact evaluation), at
+        /// every size up to past `i128` (then marked, never wrong); a
+        /// perturbed value gives another polynomial or none.
+        #[test]
+        fn interpolation_inverts_evaluation(
+            p in zpoly(10, 60),
+            first in -8i64..8,
+            extra in 0usize..4,
+            bump in 0usize..14,
+        ) {
+            let n = (p.degree().unwrap_or(0) + 1 + extra).min(CAP);
+            let small = SmallPoly::from_zpoly(&p).expect("60 bits fit");
+            let mut values: Vec<SmallInt> = (0..n).map(|i| small.value_at(first + i as i64)).collect();
+            for (i, v) in values.iter().enumerate() {
+                let exact = p.eval_rat(&ccd_arith::Rat::from(first + i as i64));
+                if let Some(v) = v.to_int() {
+                    prop_assert_eq!(ccd_arith::Rat::from_int(v), exact);
+                }
+            }
+            let back = SmallPoly::interpolate(first, &values);
+            if back.is_exact() {
+                prop_assert_eq!(back.to_zpoly(), Some(p.clone()));
+            } else {
+                prop_assert!(values.iter().any(|v| v.to_i128().is_none()) || p.max_bits() > 40);
+            }
+            if bump < n && values.iter().all(|v| v.to_i128().is_some()) {
+                values[bump] = values[bump].plus(&SmallInt::one());
+                let other = SmallPoly::interpolate(first, &values);
+                prop_assert!(other.to_zpoly() != Some(p));
+            }
         }
 
         /// Every operation agrees with `ZPoly` or reports an overflow, and

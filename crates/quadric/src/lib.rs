@@ -8,6 +8,7 @@
 mod ellipsoid;
 mod matrix;
 mod placement;
+mod relative;
 
 pub use ccd_classify::Configuration;
 pub use ellipsoid::{classify_pair, classify_quartic, Ellipsoid};
@@ -18,4 +19,7 @@ pub use matrix::{
 pub use placement::{
     affine_inverse, affine_placement, body_diagonal, norm2, quat_mul, rigid_inverse,
     rigid_placement, rotation_numerator,
+};
+pub use relative::{
+    rigid_characteristic, rigid_characteristic_degree, rigid_values, RigidFrame, ScaledSum,
 };
