@@ -44,7 +44,7 @@ use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
 use ccd_quadric::{
     characteristic, is_affine_placement, placed_characteristic, rigid_characteristic,
-    rigid_characteristic_degree, rigid_values, Mat4, RigidFrame,
+    rigid_characteristic_degree, rigid_values, Mat4,
 };
 
 /// `f(λ; u)` as `[c_4, c_3, c_2, c_1, c_0]` (high → low in λ), each in `ℤ[u]`,
@@ -497,11 +497,9 @@ enum Scaling {
 /// `None` for an affine body. `rigid-deg2`: coefficients of degree 4
 /// instead of 16, 12, 8, 4, 0.
 fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Option<Quartic> {
-    // The frames in i128 (numbers that do not fit come in overflowed).
-    let (sa, sb) = (
-        a.rigid_frame(SmallPoly::lowered)?,
-        b.rigid_frame(SmallPoly::lowered)?,
-    );
+    // Two rigid frames.
+    a.rigid_frame(|_| ())?;
+    b.rigid_frame(|_| ())?;
     let [da, db]: [[Int; 4]; 2] = match scaling {
         Scaling::Quadrics => [a, b].map(|body| body.diagonal.each_ref().map(|d| d.coeff(0))),
         Scaling::InversePlacements => {
@@ -537,9 +535,11 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
     let diagonal_bits = da.iter().chain(&db).map(Int::bits).max().unwrap_or(0);
     let likely =
         8 * frame_bits + 4 * diagonal_bits + 8 * (64 - degree.leading_zeros() as u64) + 14 <= 126;
-    let small = by_values(&sa, &sb, &ta, &tb).or_else(|| {
+    let small = by_values(a, b, &ta, &tb).or_else(|| {
+        // The frames in i128 (numbers that do not fit come in overflowed).
+        let [sa, sb] = [a, b].map(|body| body.rigid_frame(SmallPoly::lowered));
         likely
-            .then(|| exact(rigid_characteristic(&sa, &sb, &ta, &tb)))
+            .then(|| exact(rigid_characteristic(&sa?, &sb?, &ta, &tb)))
             .flatten()
     });
     Some(small.map_or_else(
@@ -561,32 +561,29 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
 /// interpolant) at a fifth of the cost (`rigid-deg2`: `D = 4`); `None`
 /// when a number does not fit or `D` exceeds the capacity.
 fn by_values(
-    a: &RigidFrame<SmallPoly>,
-    b: &RigidFrame<SmallPoly>,
+    a: &PlacedQuadric,
+    b: &PlacedQuadric,
     da: &[SmallInt; 4],
     db: &[SmallInt; 4],
 ) -> Option<[SmallPoly; 5]> {
-    let degree = |p: &SmallPoly| p.degree().unwrap_or(0);
-    let top = rigid_characteristic_degree(&a.map(degree), &b.map(degree));
+    let degree = |p: &ZPoly| p.degree().unwrap_or(0);
+    let top = rigid_characteristic_degree(&a.rigid_frame(degree)?, &b.rigid_frame(degree)?);
     if top > SmallPoly::MAX_DEGREE {
         return None;
     }
+    let word = |d: &[SmallInt; 4]| -> Option<[i128; 4]> {
+        let [w, x, y, z] = d.each_ref().map(SmallInt::to_i128);
+        Some([w?, x?, y?, z?])
+    };
+    let (da, db) = (word(da)?, word(db)?);
     let first = -(top as i64 / 2);
     let mut values = [[SmallInt::zero(); SmallPoly::MAX_DEGREE + 1]; 5];
-    let [da, db] = [da, db].map(|d| d.iter().map(SmallInt::to_i128).collect::<Option<Vec<_>>>());
-    let (da, db): ([i128; 4], [i128; 4]) = (da?.try_into().ok()?, db?.try_into().ok()?);
-    for (i, u) in (first..=first + top as i64).enumerate() {
-        let at = |f: &RigidFrame<SmallPoly>| {
-            let f = f.map(|p| p.value_at(u).to_i128());
-            let exact =
-                f.m.iter()
-                    .flatten()
-                    .chain(&f.center)
-                    .chain([&f.n, &f.w])
-                    .all(Option::is_some);
-            exact.then(|| f.map(|x| x.unwrap_or(0)))
-        };
-        let f = rigid_values(&at(a)?, &at(b)?, &da, &db)?;
+    let (fa, fb) = (
+        a.rigid_frame_values(first, top + 1)?,
+        b.rigid_frame_values(first, top + 1)?,
+    );
+    for (i, (fa, fb)) in fa.iter().zip(&fb).enumerate() {
+        let f = rigid_values(fa, fb, &da, &db)?;
         for (column, v) in values.iter_mut().zip(f) {
             column[i] = SmallInt::from_i128(v);
         }
@@ -1510,7 +1507,9 @@ mod tests {
         /// positive constant by which they differ. With `long`, every
         /// number is stretched past 80 bits (times `10^30 + 1`, over
         /// `10^30`), where the route it must match is the inverse
-        /// placements' Cauchy–Binet ([`inverse_characteristic`]).
+        /// placements' Cauchy–Binet ([`inverse_characteristic`]). On the
+        /// way, its `i128` routes (by values, [`by_values`], and as
+        /// polynomials) agree with its exact one wherever they answer.
         #[test]
         fn relative_placement_gives_the_quadrics_route(
             quats in proptest::collection::vec(-3i64..4, 24),
@@ -1564,6 +1563,19 @@ mod tests {
             if !(pa.turns() || pb.turns()) {
                 // Bodies that never turn take the centred route.
                 return Err(proptest::test_runner::TestCaseError::reject("no turn"));
+            }
+            // The i128 routes (by values, as polynomials) give the exact
+            // polynomials wherever they give any.
+            let [fa, fb] = [&pa, &pb].map(|p| p.rigid_frame(ZPoly::clone).expect("rigid"));
+            let [da, db] = [&pa, &pb].map(|p| p.diagonal.each_ref().map(|d| d.coeff(0)));
+            let polynomial = rigid_characteristic(&fa, &fb, &da, &db);
+            let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
+            if let Some(f) = by_values(&pa, &pb, &ta, &tb) {
+                proptest::prop_assert_eq!(SmallPoly::to_zpolys(&f), Some(polynomial.clone()));
+            }
+            let [sa, sb] = [&pa, &pb].map(|p| p.rigid_frame(SmallPoly::lowered).expect("rigid"));
+            if let Some(f) = exact(rigid_characteristic(&sa, &sb, &ta, &tb)) {
+                proptest::prop_assert_eq!(SmallPoly::to_zpolys(&f), Some(polynomial.clone()));
             }
             let candidates = pa
                 .det_factors

@@ -558,6 +558,55 @@ impl PlacedQuadric {
         })
     }
 
+    /// The numbers of a rigid frame at the integers `first`, `first + 1`,
+    /// …, (`count` of them) in `i128`: each polynomial's coefficients
+    /// brought to `i128` once and evaluated by Horner (checked). `None` for
+    /// an affine frame or when a number does not fit.
+    pub(crate) fn rigid_frame_values(
+        &self,
+        first: i64,
+        count: usize,
+    ) -> Option<Vec<RigidFrame<i128>>> {
+        let Frame::Rigid { .. } = &self.frame else {
+            return None;
+        };
+        let zero = RigidFrame {
+            m: [[0; 3]; 3],
+            n: 0,
+            center: [0; 3],
+            w: 0,
+        };
+        let mut out = vec![zero; count];
+        // Frame::entries' order: M row by row, C, n, w.
+        fn slot(f: &mut RigidFrame<i128>, k: usize) -> &mut i128 {
+            match k {
+                0..9 => &mut f.m[k / 3][k % 3],
+                9..12 => &mut f.center[k - 9],
+                12 => &mut f.n,
+                _ => &mut f.w,
+            }
+        }
+        let mut c = [0i128; SmallPoly::MAX_DEGREE + 1];
+        for (k, p) in self.frame.entries().enumerate() {
+            let len = p.coeffs().len();
+            if len > c.len() {
+                return None;
+            }
+            for (x, y) in c.iter_mut().zip(p.coeffs()) {
+                *x = y.to_i128()?;
+            }
+            for (i, f) in out.iter_mut().enumerate() {
+                let u = i128::from(first + i as i64);
+                let v = c[..len]
+                    .iter()
+                    .rev()
+                    .try_fold(0i128, |v, &x| v.checked_mul(u)?.checked_add(x))?;
+                *slot(f, k) = v;
+            }
+        }
+        Some(out)
+    }
+
     /// The integer content of the frame's inverse before
     /// [`primitive_matrix`]: [`PlacedQuadric::inverse`] times it is
     /// `rigid_inverse(M, n, C, w)` (`1` for an affine frame, which is not
