@@ -38,7 +38,7 @@ use crate::curve::{content, Integer};
 use crate::error::MotionError;
 use crate::kinds::{Body, Motion, Quat, Vec3};
 use crate::matrices::{
-    placed_quadric, shortened_tables, static_quadric, through_quadrics, PlacedQuadric,
+    placed_quadric, shortened_tables, small_first, static_quadric, through_quadrics, PlacedQuadric,
 };
 use ccd_arith::{Int, Rat, RingOps, SmallInt};
 use ccd_poly::{Residues, SmallPoly, ZPoly};
@@ -181,14 +181,10 @@ impl CharPoly {
             }
         }
         let (a, b) = (static_body(a)?, static_body(b)?);
-        let small: Option<Vec<Int>> = static_characteristic::<SmallInt>(&a, &b)
-            .iter()
-            .map(SmallInt::to_int)
-            .collect();
-        let f: [Int; 5] = match small.map(<[Int; 5]>::try_from) {
-            Some(Ok(f)) => f,
-            _ => static_characteristic::<Int>(&a, &b),
-        };
+        let f = small_first(
+            || static_characteristic::<SmallInt>(&a, &b),
+            || static_characteristic::<Int>(&a, &b),
+        );
         Some(CharPoly {
             coeffs: balance_primes(f.map(ZPoly::constant)),
         })
@@ -1507,7 +1503,10 @@ mod tests {
         /// positive constant by which they differ. With `long`, every
         /// number is stretched past 80 bits (times `10^30 + 1`, over
         /// `10^30`), where the route it must match is the inverse
-        /// placements' Cauchy–Binet ([`inverse_characteristic`]). On the
+        /// placements' Cauchy–Binet ([`inverse_characteristic`]) — except
+        /// where the normalisation's tie between rescalings of λ of equal
+        /// `α + 2β` is broken by sizes the old route saw with the other
+        /// body's powers still in ([`same_but_a_tie`]). On the
         /// way, its `i128` routes (by values, [`by_values`], and as
         /// polynomials) agree with its exact one wherever they answer.
         #[test]
@@ -1590,7 +1589,11 @@ mod tests {
                 characteristic(&pa.quadric(), &pb.quadric())
             };
             let reference = CharPoly { coeffs: normalise_with(reference, candidates) };
-            proptest::prop_assert_eq!(CharPoly::from_placed(&pa, &pb), reference);
+            let f = CharPoly::from_placed(&pa, &pb);
+            proptest::prop_assert!(
+                f == reference || same_but_a_tie(&f, &reference),
+                "{f:?} vs {reference:?}"
+            );
         }
 
         /// The Plücker route (affine bodies) against the adjugate quadrics
@@ -1728,6 +1731,30 @@ mod tests {
         let pow = |x: &Rat, e: usize| (0..e).fold(Rat::one(), |acc, _| &acc * x);
         r.iter().all(|x| x.signum() > 0)
             && (0..5).all(|k| pow(&r[k], 4) == &pow(&r[0], 4 - k) * &pow(&r[4], k))
+    }
+
+    /// `f(λ) = g(r·λ)` up to the factor `r⁻²` for a rational function `r`
+    /// (`c_k^f = c_k^g·r^(k−2)`): the same `c_2`, so the same `α + 2β` of
+    /// the normalisation and the same `sr0` (weight 12, degree 6:
+    /// `r^(12 − 2·6) = 1`); only a tie between such rescalings broken
+    /// otherwise. `r = N/D` from `c_3` (else `c_1`), checked on every
+    /// coefficient by cross-multiplication.
+    fn same_but_a_tie(f: &CharPoly, g: &CharPoly) -> bool {
+        let (cf, cg) = (|k: usize| &f.coeffs[4 - k], |k: usize| &g.coeffs[4 - k]);
+        let (n, d) = if !cf(3).is_zero() && !cg(3).is_zero() {
+            (cf(3).clone(), cg(3).clone())
+        } else if !cf(1).is_zero() && !cg(1).is_zero() {
+            (cg(1).clone(), cf(1).clone())
+        } else {
+            return cf(2) == cg(2) && (cf(4) * cf(0)) == (cg(4) * cg(0));
+        };
+        let pow = |p: &ZPoly, e: usize| (0..e).fold(ZPoly::from_i64s(&[1]), |a, _| &a * p);
+        cf(2) == cg(2)
+            && (0..5usize).all(|k| {
+                let e = k.abs_diff(2);
+                let (up, down) = if k >= 2 { (&d, &n) } else { (&n, &d) };
+                (cf(k) * &pow(up, e)) == (cg(k) * &pow(down, e))
+            })
     }
 
     proptest::proptest! {

@@ -161,9 +161,30 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
     // over ℤ, then as constants (no polynomial or rational arithmetic).
     let fixed = |q: &Quat, center: [ZPoly; 3], w: ZPoly| {
         let q: [Int; 4] = rat_vec_to_int(q.each_ref());
+        let small = q.each_ref().map(SmallInt::of);
+        let m = small_first(
+            || {
+                let m = rotation_numerator(&small);
+                let n = norm2(&small);
+                std::array::from_fn(|k| if k < 9 { m[k / 3][k % 3] } else { n })
+            },
+            || {
+                let m = rotation_numerator(&q);
+                let n = norm2(&q);
+                std::array::from_fn(|k| {
+                    if k < 9 {
+                        m[k / 3][k % 3].clone()
+                    } else {
+                        n.clone()
+                    }
+                })
+            },
+        )
+        .map(ZPoly::constant);
+        let [m0, m1, m2, m3, m4, m5, m6, m7, m8, n] = m;
         Frame::Rigid {
-            m: rotation_numerator(&q).map(|row| row.map(ZPoly::constant)),
-            n: ZPoly::constant(norm2(&q)),
+            m: [[m0, m1, m2], [m3, m4, m5], [m6, m7, m8]],
+            n,
             center,
             w,
         }
@@ -290,6 +311,20 @@ fn primitive_matrix(n: Mat4<ZPoly>) -> Mat4<ZPoly> {
         return n;
     }
     n.map(|row| row.map(|e| e.div_exact_int(&g)))
+}
+
+/// Integers computed in `i128` ([`SmallInt`], overflow detected) when
+/// every one fits, else over [`Int`]: the same integers, without
+/// big-integer arithmetic on the usual short numbers.
+pub(crate) fn small_first<const N: usize>(
+    small: impl FnOnce() -> [SmallInt; N],
+    big: impl FnOnce() -> [Int; N],
+) -> [Int; N] {
+    let lifted: Option<Vec<Int>> = small().iter().map(SmallInt::to_int).collect();
+    match lifted.map(<[Int; N]>::try_from) {
+        Some(Ok(x)) => x,
+        _ => big(),
+    }
 }
 
 /// `v` times the lcm of its denominators.
@@ -919,7 +954,11 @@ pub fn placed_quadric(body: &Body, span: &[Rat; 2]) -> Result<PlacedQuadric, Mot
         .collect();
     Ok(PlacedQuadric {
         frame,
-        diagonal: integer_diagonal::<Int>(&body.radii).map(ZPoly::constant),
+        diagonal: small_first(
+            || integer_diagonal::<SmallInt>(&body.radii),
+            || integer_diagonal::<Int>(&body.radii),
+        )
+        .map(ZPoly::constant),
         radii: body.radii.clone(),
         det_factors,
     })
