@@ -578,8 +578,8 @@ fn by_values(
         a.rigid_frame_values(first, top + 1)?,
         b.rigid_frame_values(first, top + 1)?,
     );
-    for (i, (fa, fb)) in fa.iter().zip(&fb).enumerate() {
-        let f = rigid_values(fa, fb, &da, &db)?;
+    let frames: Vec<_> = fa.into_iter().zip(fb).collect();
+    for (i, f) in rigid_values(&frames, &da, &db)?.into_iter().enumerate() {
         for (column, v) in values.iter_mut().zip(f) {
             column[i] = SmallInt::from_i128(v);
         }

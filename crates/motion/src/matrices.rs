@@ -622,21 +622,34 @@ impl PlacedQuadric {
             }
         }
         let mut c = [0i128; SmallPoly::MAX_DEGREE + 1];
+        let last = first + count as i64 - 1;
+        let u_bits = 64
+            - first
+                .unsigned_abs()
+                .max(last.unsigned_abs())
+                .leading_zeros();
         for (k, p) in self.frame.entries().enumerate() {
             let len = p.coeffs().len();
             if len > c.len() {
                 return None;
             }
+            let mut c_bits = 0;
             for (x, y) in c.iter_mut().zip(p.coeffs()) {
                 *x = y.to_i128()?;
+                c_bits = c_bits.max(128 - x.unsigned_abs().leading_zeros());
             }
+            // Plain machine arithmetic when |Σ c_i·u^i| < 2^126 along the
+            // way (|c_i| < 2^c_bits, |u| < 2^u_bits, len terms); checked
+            // otherwise.
+            let plain = c_bits + u_bits * len as u32 + len as u32 <= 126;
             for (i, f) in out.iter_mut().enumerate() {
                 let u = i128::from(first + i as i64);
-                let v = c[..len]
-                    .iter()
-                    .rev()
-                    .try_fold(0i128, |v, &x| v.checked_mul(u)?.checked_add(x))?;
-                *slot(f, k) = v;
+                let mut terms = c[..len].iter().rev();
+                *slot(f, k) = if plain {
+                    terms.fold(0i128, |v, &x| v * u + x)
+                } else {
+                    terms.try_fold(0i128, |v, &x| v.checked_mul(u)?.checked_add(x))?
+                };
             }
         }
         Some(out)
@@ -652,14 +665,9 @@ impl PlacedQuadric {
         let Frame::Rigid { m, n, center, w } = &self.frame else {
             return Int::one();
         };
-        let g = content(
-            m.iter()
-                .flatten()
-                .chain([n])
-                .map(ZPoly::content)
-                .collect::<Vec<_>>()
-                .iter(),
-        );
+        // One pass over M's coefficients, stopping at 1.
+        let g = ZPoly::common_content(m.as_flattened());
+        let g = if g.is_one() { g } else { g.gcd(&n.content()) };
         let g = g * w.content();
         if g.is_one() {
             return g;

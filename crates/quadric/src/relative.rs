@@ -62,40 +62,41 @@ pub fn rigid_characteristic_degree(a: &RigidFrame<usize>, b: &RigidFrame<usize>)
     2 * largest(&quantities)
 }
 
-/// [`rigid_characteristic`] of frames and diagonals given by their values
-/// (at one `u`) in `i128`, in plain machine arithmetic once a bound shows
-/// that no number on the way reaches `2^126`; `None` when the bound does
-/// not hold. With every frame number below `2^F` in magnitude,
-/// `δ < 2^(2F+1)` and the five quantities are below `2^(4F+4)` (`x̃`, a
-/// sum of three products of `M` with a cross product of two products, is
-/// the longest), every partial sum included. With the quantities then
-/// below `2^Q` and the diagonal entries below `2^G`, a weight (at most two
-/// products of four diagonal entries) is below `2^(4G+1)` and each
-/// coefficient a sum of at most 32 terms weight·square: below
-/// `2^(2Q+4G+6)`, every partial sum included.
+/// [`rigid_characteristic`] of frames given by their values at several
+/// `u` (`frames`, one pair per point) and diagonals, in `i128`: plain
+/// machine arithmetic once a bound shows that no number on the way
+/// reaches `2^126`, the weights formed once; `None` when the bound does
+/// not hold at some point. With every frame number below `2^F` in
+/// magnitude, `δ < 2^(2F+1)` and the five quantities are below
+/// `2^(4F+4)` (`x̃`, a sum of three products of `M` with a cross product
+/// of two products, is the longest), every partial sum included. With the
+/// quantities then below `2^Q` and the diagonal entries below `2^G`, a
+/// weight (at most two products of four diagonal entries) is below
+/// `2^(4G+1)` and each coefficient a sum of at most 32 terms
+/// weight·square: below `2^(2Q+4G+6)`, every partial sum included.
 ///
 /// ```
 /// use ccd_arith::Int;
 /// use ccd_quadric::{rigid_characteristic, rigid_values, RigidFrame};
-/// let frame = |q: [i128; 4], c: [i128; 3], w: i128| RigidFrame {
-///     m: ccd_quadric::rotation_numerator(&q.map(|x| Int::from(x as i64))),
-///     n: ccd_quadric::norm2(&q.map(|x| Int::from(x as i64))),
-///     center: c.map(|x| Int::from(x as i64)),
-///     w: Int::from(w as i64),
+/// let frame = |q: [i64; 4], c: [i64; 3], w: i64| RigidFrame {
+///     m: ccd_quadric::rotation_numerator(&q.map(Int::from)),
+///     n: ccd_quadric::norm2(&q.map(Int::from)),
+///     center: c.map(Int::from),
+///     w: Int::from(w),
 /// };
 /// let (a, b) = (frame([1, 2, 0, 1], [1, 0, 2], 3), frame([2, 0, 1, 1], [4, 1, 0], 1));
 /// let (da, db) = ([1, 4, 9, -36], [4, 1, 1, -4]);
 /// let word = |f: &RigidFrame<Int>| f.map(|x| x.to_i128().unwrap());
-/// let exact = rigid_characteristic(&a, &b, &da.map(|x| Int::from(x as i64)), &db.map(|x| Int::from(x as i64)));
-/// let fast = rigid_values(&word(&a), &word(&b), &da, &db).unwrap();
-/// assert_eq!(exact.map(|x| x.to_i128().unwrap()), fast);
+/// let int = |d: [i64; 4]| d.map(Int::from);
+/// let exact = rigid_characteristic(&a, &b, &int(da), &int(db));
+/// let fast = rigid_values(&[(word(&a), word(&b))], &da.map(i128::from), &db.map(i128::from));
+/// assert_eq!(fast, Some(vec![exact.map(|x| x.to_i128().unwrap())]));
 /// ```
 pub fn rigid_values(
-    a: &RigidFrame<i128>,
-    b: &RigidFrame<i128>,
+    frames: &[(RigidFrame<i128>, RigidFrame<i128>)],
     da: &[i128; 4],
     db: &[i128; 4],
-) -> Option<[i128; 5]> {
+) -> Option<Vec<[i128; 5]>> {
     let bits = |x: &i128| 128 - x.unsigned_abs().leading_zeros();
     let frame_bits = |f: &RigidFrame<i128>| {
         f.m.iter()
@@ -106,22 +107,21 @@ pub fn rigid_values(
             .max()
             .unwrap_or(0)
     };
-    // The quantities first (below 2^(4F+4)), then their actual size.
-    if 4 * (frame_bits(a).max(frame_bits(b))) + 4 > 126 {
-        return None;
-    }
-    let word = |x: &i128| Word(*x);
-    let minors = RelativeMinors::of(&a.map(word), &b.map(word));
-    let q = minors.all().map(|w| bits(&w.0)).max().unwrap_or(0);
     let g = da.iter().chain(db).map(bits).max().unwrap_or(0);
-    if 2 * q + 4 * g + 6 > 126 {
-        return None;
-    }
-    Some(
-        minors
-            .characteristic(&da.map(Word), &db.map(Word))
-            .map(|w| w.0),
-    )
+    let weights = Weights::of(&da.map(Word), &db.map(Word));
+    let word = |x: &i128| Word(*x);
+    frames
+        .iter()
+        .map(|(a, b)| {
+            // The quantities first (below 2^(4F+4)), then their actual size.
+            if 4 * (frame_bits(a).max(frame_bits(b))) + 4 > 126 {
+                return None;
+            }
+            let minors = RelativeMinors::of(&a.map(word), &b.map(word));
+            let q = minors.all().map(|w| bits(&w.0)).max().unwrap_or(0);
+            (2 * q + 4 * g + 6 <= 126).then(|| minors.weighted(&weights).map(|w| w.0))
+        })
+        .collect()
 }
 
 /// An `i128` in plain machine arithmetic, for [`rigid_values`] only,
@@ -269,7 +269,7 @@ pub fn rigid_characteristic<R: ScaledSum>(
     da: &[R::Scalar; 4],
     db: &[R::Scalar; 4],
 ) -> [R; 5] {
-    RelativeMinors::of(a, b).characteristic(da, db)
+    RelativeMinors::of(a, b).weighted(&Weights::of(da, db))
 }
 
 /// The quantities whose squares make up [`rigid_characteristic`]: `s`,
@@ -345,55 +345,84 @@ impl<R: ScaledSum> RelativeMinors<R> {
 
     /// `Σ λ^k·Σ weight·square` (see [`rigid_characteristic`]): 25 squares
     /// and 46 products by constants.
-    fn characteristic(&self, da: &[R::Scalar; 4], db: &[R::Scalar; 4]) -> [R; 5] {
-        let (ta, tb) = (subset_products(da), subset_products(db));
-        let bit = |i: usize| 1usize << i;
-        // Coefficient of λ^k at f[4 − k]: Σ weight·square, each square
-        // formed once and each weight a sum of products of the two tables.
+    fn weighted(&self, w: &Weights<R::Scalar>) -> [R; 5] {
+        // Coefficient of λ^k at f[4 − k], each square formed once.
         let mut f: [R; 5] = std::array::from_fn(|_| R::zero());
-        let mut add = |q: &R, terms: &[(usize, &[(usize, usize)])]| {
+        let mut add = |q: &R, terms: &[(usize, &R::Scalar)]| {
             if q.is_zero() {
                 return;
             }
             let square = q.squared();
-            for &(k, pairs) in terms {
-                let weight = pairs.iter().fold(R::Scalar::zero(), |w, &(sa, sb)| {
-                    w.plus(&ta[sa].times(&tb[sb]))
-                });
-                f[4 - k].add_scaled(&weight, &square);
+            for &(k, weight) in terms {
+                f[4 - k].add_scaled(weight, &square);
             }
         };
-        // The full minors (sizes 0 and 3 of R, with and without row and
-        // column 3).
         add(
             &self.s,
-            &[
-                (4, &[(15, 0)]),
-                (3, &[(7, 8)]),
-                (1, &[(8, 7)]),
-                (0, &[(0, 15)]),
-            ],
+            &[(4, &w.s[0]), (3, &w.s[1]), (1, &w.s[2]), (0, &w.s[3])],
         );
         for i in 0..3 {
-            add(&self.d[i], &[(3, &[(7, bit(i))])]);
-            add(&self.dp[i], &[(1, &[(bit(i), 7)])]);
+            add(&self.d[i], &[(3, &w.d[i])]);
+            add(&self.dp[i], &[(1, &w.dp[i])]);
             for j in 0..3 {
-                let (ri, cj) = (bit(i), bit(j));
-                // Size 1 (rows {i}, columns {j}; with 3 in both), and the
-                // complementary size 2 (rows {0,1,2}∖{i}, columns
-                // {0,1,2}∖{j}; with 3 in both).
-                add(
-                    &self.r[i][j],
-                    &[
-                        (3, &[(15 ^ cj, ri)]),
-                        (2, &[(7 ^ cj, 8 | ri), (8 | cj, 7 ^ ri)]),
-                        (1, &[(cj, 15 ^ ri)]),
-                    ],
-                );
-                // Rows {0,1,2}∖{i}, columns {j, 3}.
-                add(&self.x[i][j], &[(2, &[(7 ^ cj, 7 ^ ri)])]);
+                let r = &w.r[i][j];
+                add(&self.r[i][j], &[(3, &r[0]), (2, &r[1]), (1, &r[2])]);
+                add(&self.x[i][j], &[(2, &w.x[i][j])]);
             }
         }
         f
+    }
+}
+
+/// The constant weights of [`RelativeMinors::weighted`]: for each
+/// quantity and power of λ, `Σ D_A(Tᶜ)·D_B(U)` over the minors `(U, T)`
+/// it stands for ([`rigid_characteristic`]).
+struct Weights<S> {
+    /// `s²` at λ⁴, λ³, λ¹, λ⁰.
+    s: [S; 4],
+    /// `d̃_i²` at λ³.
+    d: [S; 3],
+    /// `d̃′_j²` at λ¹.
+    dp: [S; 3],
+    /// `R̃_ij²` at λ³, λ², λ¹.
+    r: [[[S; 3]; 3]; 3],
+    /// `x̃_ij²` at λ².
+    x: [[S; 3]; 3],
+}
+
+impl<S: RingOps> Weights<S> {
+    /// From the diagonals (bit `c` of a table index: entry `c`).
+    fn of(da: &[S; 4], db: &[S; 4]) -> Weights<S> {
+        let (ta, tb) = (subset_products(da), subset_products(db));
+        let w = |pairs: &[(usize, usize)]| {
+            pairs
+                .iter()
+                .fold(S::zero(), |w, &(sa, sb)| w.plus(&ta[sa].times(&tb[sb])))
+        };
+        let bit = |i: usize| 1usize << i;
+        Weights {
+            // The full minors (sizes 0 and 3 of R, with and without row
+            // and column 3).
+            s: [w(&[(15, 0)]), w(&[(7, 8)]), w(&[(8, 7)]), w(&[(0, 15)])],
+            // Rows {i}, columns {3}.
+            d: std::array::from_fn(|i| w(&[(7, bit(i))])),
+            // Rows {0,1,2}, columns {0,1,2,3}∖{j}.
+            dp: std::array::from_fn(|j| w(&[(bit(j), 7)])),
+            // Size 1 (rows {i}, columns {j}; with 3 in both), and the
+            // complementary size 2 (rows {0,1,2}∖{i}, columns {0,1,2}∖{j};
+            // with 3 in both).
+            r: std::array::from_fn(|i| {
+                std::array::from_fn(|j| {
+                    let (ri, cj) = (bit(i), bit(j));
+                    [
+                        w(&[(15 ^ cj, ri)]),
+                        w(&[(7 ^ cj, 8 | ri), (8 | cj, 7 ^ ri)]),
+                        w(&[(cj, 15 ^ ri)]),
+                    ]
+                })
+            }),
+            // Rows {0,1,2}∖{i}, columns {j, 3}.
+            x: std::array::from_fn(|i| std::array::from_fn(|j| w(&[(7 ^ bit(j), 7 ^ bit(i))]))),
+        }
     }
 }
