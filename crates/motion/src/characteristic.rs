@@ -526,12 +526,13 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
     // the products of their coefficients, and four diagonal entries; an
     // overflow is detected anyway, this skips doomed attempts).
     let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
-    let frame_bits = a.frame_bits().max(b.frame_bits());
-    let degree = a.degree_bounds().0.max(b.degree_bounds().0) as u64;
-    let diagonal_bits = da.iter().chain(&db).map(Int::bits).max().unwrap_or(0);
-    let likely =
-        8 * frame_bits + 4 * diagonal_bits + 8 * (64 - degree.leading_zeros() as u64) + 14 <= 126;
     let small = by_values(a, b, &ta, &tb).or_else(|| {
+        let frame_bits = a.frame_bits().max(b.frame_bits());
+        let degree = a.degree_bounds().0.max(b.degree_bounds().0) as u64;
+        let diagonal_bits = da.iter().chain(&db).map(Int::bits).max().unwrap_or(0);
+        let likely =
+            8 * frame_bits + 4 * diagonal_bits + 8 * (64 - degree.leading_zeros() as u64) + 14
+                <= 126;
         // The frames in i128 (numbers that do not fit come in overflowed).
         let [sa, sb] = [a, b].map(|body| body.rigid_frame(SmallPoly::lowered));
         likely
@@ -1189,17 +1190,22 @@ fn multiplicity_of_prime(c: &ZPoly, p: u32) -> usize {
 /// else over [`ZPoly`]; the same polynomial either way.
 fn normalise_small(f: &[SmallPoly; 5], candidates: Vec<ZPoly>) -> [ZPoly; 5] {
     let basis = positive_basis(candidates);
-    let f = basis
+    let small = basis
         .iter()
         .map(SmallPoly::from_zpoly)
         .collect::<Option<Vec<_>>>()
-        .and_then(|pis| normalise_in(f.clone(), &pis))
-        .and_then(|f| SmallPoly::to_zpolys(&f))
-        .unwrap_or_else(|| {
+        .and_then(|pis| normalise_in(f.clone(), &pis));
+    // Coefficients of at most BALANCE_BITS bits: balance_primes would
+    // leave them as they are.
+    let short = |f: &[SmallPoly; 5]| f.iter().all(|c| c.max_bits() <= BALANCE_BITS);
+    match small.as_ref().map(|f| (short(f), SmallPoly::to_zpolys(f))) {
+        Some((true, Some(f))) => f,
+        Some((false, Some(f))) => balance_primes(f),
+        _ => {
             let f = SmallPoly::to_zpolys(f).expect("an exact f");
-            normalise_in(f, &basis).expect("ZPoly arithmetic is exact")
-        });
-    balance_primes(f)
+            balance_primes(normalise_in(f, &basis).expect("ZPoly arithmetic is exact"))
+        }
+    }
 }
 
 /// The coprime basis of the candidates ([`coprime_basis`]), each made
