@@ -153,10 +153,6 @@ impl Frame<ZPoly> {
 /// determinant (the weight curve, and `|q|²` or `det L`): the only factors
 /// `det A` can have.
 fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>), MotionError> {
-    let rigid = |q: &[ZPoly; 4], center: [ZPoly; 3], w: ZPoly| {
-        let (m, n) = rotation(q);
-        Frame::Rigid { m, n, center, w }
-    };
     // A constant orientation: the rotation of the integer quaternion `L·q`
     // over ℤ, then as constants (no polynomial or rational arithmetic).
     let fixed = |q: &Quat, center: [ZPoly; 3], w: ZPoly| {
@@ -234,8 +230,11 @@ fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>),
             }
             let c = to_poly_curve(center);
             check_weight(&c.denominator)?;
-            let factors = vec![c.denominator.clone(), norm2(&q)];
-            Ok((rigid(&q, c.numerators, c.denominator), factors))
+            // |q|² formed once, with the rotation.
+            let (m, n) = rotation(&q);
+            let factors = vec![c.denominator.clone(), n.clone()];
+            let (center, w) = (c.numerators, c.denominator);
+            Ok((Frame::Rigid { m, n, center, w }, factors))
         }
         Motion::Affine { matrix } => {
             // The twelve entries as one curve: one weight polynomial.
