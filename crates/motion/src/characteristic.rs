@@ -66,14 +66,18 @@ impl CharPoly {
 
     /// `det(λA + B)` of two placed bodies, normalised with the determinant
     /// factors the motions already know (no factorisation of `det A`,
-    /// `det B` needed). Computed through the quadrics `NᵀDN` (for numbers
-    /// past 80 bits, by Cauchy–Binet on the rows of the inverse placements
-    /// instead, with the diagonal products of `diag(1/r², −1)`) or, when
-    /// the inverse
-    /// placements have higher degree than the placements (affine motions:
-    /// `N = adj M`), from the Plücker coordinates of the placements
-    /// ([`placed_characteristic`]: degree 16 instead of 48 for degree-2
-    /// rational affine motions, before normalisation).
+    /// `det B` needed). Bodies that never turn: in the frame of A's centre
+    /// (`centred.rs`). Two rigid bodies: from the minors of their
+    /// relative placement ([`rigid_characteristic`], at the pair's own
+    /// degree; scaled as the quadrics' route below scales `f`, so the
+    /// same normalised `f`). Otherwise through the quadrics `NᵀDN` (for
+    /// numbers past 80 bits, by Cauchy–Binet on the rows of the inverse
+    /// placements instead, with the diagonal products of
+    /// `diag(1/r², −1)`) or, when the inverse placements have higher
+    /// degree than the placements (affine motions: `N = adj M`), from the
+    /// Plücker coordinates of the placements ([`placed_characteristic`]:
+    /// degree 16 instead of 48 for degree-2 rational affine motions,
+    /// before normalisation).
     pub fn from_placed(a: &PlacedQuadric, b: &PlacedQuadric) -> CharPoly {
         let candidates = a
             .det_factors
