@@ -79,12 +79,7 @@ impl CharPoly {
     /// degree 16 instead of 48 for degree-2 rational affine motions,
     /// before normalisation).
     pub fn from_placed(a: &PlacedQuadric, b: &PlacedQuadric) -> CharPoly {
-        let candidates = a
-            .det_factors
-            .iter()
-            .chain(&b.det_factors)
-            .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
-            .collect();
+        let candidates = known_factors(a, b);
         // Bodies that never turn: in the frame of A's centre (crate::centred),
         // in i128 first, over Int if a number does not fit.
         let centred = (!(a.turns() || b.turns()))
@@ -309,6 +304,17 @@ impl CharPoly {
             c.eval_homogeneous(u) * u.denom().pow((d - top) as u32)
         })
     }
+}
+
+/// The squarefree factors of the polynomials whose powers make up
+/// `det A` and `det B` (the motions know them): the normalisation's
+/// candidate factors.
+fn known_factors(a: &PlacedQuadric, b: &PlacedQuadric) -> Vec<ZPoly> {
+    a.det_factors
+        .iter()
+        .chain(&b.det_factors)
+        .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
+        .collect()
 }
 
 /// A static body's radii, centre and orientation.
@@ -1586,12 +1592,7 @@ mod tests {
             if let Some(f) = exact(rigid_characteristic(&sa, &sb, &ta, &tb)) {
                 proptest::prop_assert_eq!(SmallPoly::to_zpolys(&f), Some(polynomial.clone()));
             }
-            let candidates = pa
-                .det_factors
-                .iter()
-                .chain(&pb.det_factors)
-                .flat_map(|p| squarefree_factors(p).into_iter().map(|(f, _)| f))
-                .collect();
+            let candidates = known_factors(&pa, &pb);
             let reference = if pa.bits().max(pb.bits()) > SMALL_BODY_BITS {
                 proptest::prop_assert!(long);
                 inverse_characteristic(&pa, &pb)
