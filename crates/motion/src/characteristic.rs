@@ -503,9 +503,9 @@ enum Scaling {
 /// `None` for an affine body. `rigid-deg2`: coefficients of degree 4
 /// instead of 16, 12, 8, 4, 0.
 fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Option<Quartic> {
-    // Two rigid frames.
-    a.rigid_frame(|_| ())?;
-    b.rigid_frame(|_| ())?;
+    if !(a.is_rigid() && b.is_rigid()) {
+        return None;
+    }
     let [da, db]: [[Int; 4]; 2] = match scaling {
         Scaling::Quadrics => [a, b].map(|body| body.diagonal.each_ref().map(|d| d.coeff(0))),
         Scaling::InversePlacements => {
@@ -535,8 +535,7 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
     // to fit (every term is a product of eight frame numbers, summed over
     // the products of their coefficients, and four diagonal entries; an
     // overflow is detected anyway, this skips doomed attempts).
-    let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
-    let small = by_values(a, b, &ta, &tb).or_else(|| {
+    let small = by_values(a, b, &da, &db).or_else(|| {
         let frame_bits = a.frame_bits().max(b.frame_bits());
         let degree = a.degree_bounds().0.max(b.degree_bounds().0) as u64;
         let diagonal_bits = da.iter().chain(&db).map(Int::bits).max().unwrap_or(0);
@@ -545,6 +544,7 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
                 <= 126;
         // The frames in i128 (numbers that do not fit come in overflowed).
         let [sa, sb] = [a, b].map(|body| body.rigid_frame(SmallPoly::lowered));
+        let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
         likely
             .then(|| exact(rigid_characteristic(&sa?, &sb?, &ta, &tb)))
             .flatten()
@@ -570,27 +570,26 @@ fn rigid_quartic(a: &PlacedQuadric, b: &PlacedQuadric, scaling: Scaling) -> Opti
 fn by_values(
     a: &PlacedQuadric,
     b: &PlacedQuadric,
-    da: &[SmallInt; 4],
-    db: &[SmallInt; 4],
+    da: &[Int; 4],
+    db: &[Int; 4],
 ) -> Option<[SmallPoly; 5]> {
     let degree = |p: &ZPoly| p.degree().unwrap_or(0);
     let top = rigid_characteristic_degree(&a.rigid_frame(degree)?, &b.rigid_frame(degree)?);
     if top > SmallPoly::MAX_DEGREE {
         return None;
     }
-    let word = |d: &[SmallInt; 4]| -> Option<[i128; 4]> {
-        let [w, x, y, z] = d.each_ref().map(SmallInt::to_i128);
+    let word = |d: &[Int; 4]| -> Option<[i128; 4]> {
+        let [w, x, y, z] = d.each_ref().map(Int::to_i128);
         Some([w?, x?, y?, z?])
     };
     let (da, db) = (word(da)?, word(db)?);
     let first = -(top as i64 / 2);
-    let mut values = [[SmallInt::zero(); SmallPoly::MAX_DEGREE + 1]; 5];
     let (fa, fb) = (
         a.rigid_frame_values(first, top + 1)?,
         b.rigid_frame_values(first, top + 1)?,
     );
-    let frames: Vec<_> = fa.into_iter().zip(fb).collect();
-    for (i, f) in rigid_values(&frames, &da, &db)?.into_iter().enumerate() {
+    let mut values = [[SmallInt::zero(); SmallPoly::MAX_DEGREE + 1]; 5];
+    for (i, f) in rigid_values(&fa, &fb, &da, &db)?.into_iter().enumerate() {
         for (column, v) in values.iter_mut().zip(f) {
             column[i] = SmallInt::from_i128(v);
         }
@@ -1584,11 +1583,11 @@ mod tests {
             let [fa, fb] = [&pa, &pb].map(|p| p.rigid_frame(ZPoly::clone).expect("rigid"));
             let [da, db] = [&pa, &pb].map(|p| p.diagonal.each_ref().map(|d| d.coeff(0)));
             let polynomial = rigid_characteristic(&fa, &fb, &da, &db);
-            let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
-            if let Some(f) = by_values(&pa, &pb, &ta, &tb) {
+            if let Some(f) = by_values(&pa, &pb, &da, &db) {
                 proptest::prop_assert_eq!(SmallPoly::to_zpolys(&f), Some(polynomial.clone()));
             }
             let [sa, sb] = [&pa, &pb].map(|p| p.rigid_frame(SmallPoly::lowered).expect("rigid"));
+            let [ta, tb] = [&da, &db].map(|d| d.each_ref().map(SmallInt::of));
             if let Some(f) = exact(rigid_characteristic(&sa, &sb, &ta, &tb)) {
                 proptest::prop_assert_eq!(SmallPoly::to_zpolys(&f), Some(polynomial.clone()));
             }

@@ -154,30 +154,19 @@ impl Frame<ZPoly> {
 /// `det A` can have.
 fn frame(motion: &Motion, span: &[Rat; 2]) -> Result<(Frame<ZPoly>, Vec<ZPoly>), MotionError> {
     // A constant orientation: the rotation of the integer quaternion `L·q`
-    // over ℤ, then as constants (no polynomial or rational arithmetic).
+    // over ℤ (in i128 where it fits: `small_first`; the polynomial
+    // `rotation` costs 8–14K more instructions a query on `rigid-deg2` and
+    // Example 5.1), then as constants.
     let fixed = |q: &Quat, center: [ZPoly; 3], w: ZPoly| {
         let q: [Int; 4] = rat_vec_to_int(q.each_ref());
         let small = q.each_ref().map(SmallInt::of);
-        let m = small_first(
-            || {
-                let m = rotation_numerator(&small);
-                let n = norm2(&small);
-                std::array::from_fn(|k| if k < 9 { m[k / 3][k % 3] } else { n })
-            },
-            || {
-                let m = rotation_numerator(&q);
-                let n = norm2(&q);
-                std::array::from_fn(|k| {
-                    if k < 9 {
-                        m[k / 3][k % 3].clone()
-                    } else {
-                        n.clone()
-                    }
-                })
-            },
-        )
-        .map(ZPoly::constant);
-        let [m0, m1, m2, m3, m4, m5, m6, m7, m8, n] = m;
+        // M(q)'s nine entries row by row, then |q|².
+        fn entries<R: RingOps>(q: &[R; 4]) -> [R; 10] {
+            let [[a, b, c], [d, e, f], [g, h, i]] = rotation_numerator(q);
+            [a, b, c, d, e, f, g, h, i, norm2(q)]
+        }
+        let [m0, m1, m2, m3, m4, m5, m6, m7, m8, n] =
+            small_first(|| entries(&small), || entries(&q)).map(ZPoly::constant);
         Frame::Rigid {
             m: [[m0, m1, m2], [m3, m4, m5], [m6, m7, m8]],
             n,
@@ -576,6 +565,11 @@ impl PlacedQuadric {
         }
         let q = congruence(&n, &self.diagonal.each_ref().map(SmallPoly::lowered));
         q.iter().flatten().all(SmallPoly::is_exact).then_some(q)
+    }
+
+    /// Whether the frame is rigid (`X = (M/n)·Y + C/w`), not affine.
+    pub(crate) fn is_rigid(&self) -> bool {
+        matches!(self.frame, Frame::Rigid { .. })
     }
 
     /// The numbers of a rigid frame (`X = (M/n)·Y + C/w`), each mapped by

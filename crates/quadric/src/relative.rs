@@ -63,7 +63,7 @@ pub fn rigid_characteristic_degree(a: &RigidFrame<usize>, b: &RigidFrame<usize>)
 }
 
 /// [`rigid_characteristic`] of frames given by their values at several
-/// `u` (`frames`, one pair per point) and diagonals, in `i128`: plain
+/// `u` (`a[i]`, `b[i]` at the `i`-th point) and diagonals, in `i128`: plain
 /// machine arithmetic once a bound shows that no number on the way
 /// reaches `2^126`, the weights formed once; `None` when the bound does
 /// not hold at some point. With every frame number below `2^F` in
@@ -89,11 +89,12 @@ pub fn rigid_characteristic_degree(a: &RigidFrame<usize>, b: &RigidFrame<usize>)
 /// let word = |f: &RigidFrame<Int>| f.map(|x| x.to_i128().unwrap());
 /// let int = |d: [i64; 4]| d.map(Int::from);
 /// let exact = rigid_characteristic(&a, &b, &int(da), &int(db));
-/// let fast = rigid_values(&[(word(&a), word(&b))], &da.map(i128::from), &db.map(i128::from));
+/// let fast = rigid_values(&[word(&a)], &[word(&b)], &da.map(i128::from), &db.map(i128::from));
 /// assert_eq!(fast, Some(vec![exact.map(|x| x.to_i128().unwrap())]));
 /// ```
 pub fn rigid_values(
-    frames: &[(RigidFrame<i128>, RigidFrame<i128>)],
+    a: &[RigidFrame<i128>],
+    b: &[RigidFrame<i128>],
     da: &[i128; 4],
     db: &[i128; 4],
 ) -> Option<Vec<[i128; 5]>> {
@@ -114,8 +115,8 @@ pub fn rigid_values(
     }
     let weights = Weights::of(&da.map(Word), &db.map(Word));
     let word = |x: &i128| Word(*x);
-    frames
-        .iter()
+    a.iter()
+        .zip(b)
         .map(|(a, b)| {
             // The quantities first (below 2^(4F+4)), then their actual size.
             if 4 * (frame_bits(a).max(frame_bits(b))) + 4 > 126 {
@@ -183,13 +184,6 @@ pub trait ScaledSum: RingOps {
 impl ScaledSum for Int {
     type Scalar = Int;
     fn add_scaled(&mut self, s: &Int, q: &Int) {
-        self.add_product(s, q, false);
-    }
-}
-
-impl ScaledSum for SmallInt {
-    type Scalar = SmallInt;
-    fn add_scaled(&mut self, s: &SmallInt, q: &SmallInt) {
         self.add_product(s, q, false);
     }
 }
@@ -460,7 +454,7 @@ mod tests {
             let (da, db) = (diagonal(28), diagonal(32));
             let int = |x: &i128| Int::from_i128(*x);
             let exact = rigid_characteristic(&a.map(int), &b.map(int), &da.each_ref().map(int), &db.each_ref().map(int));
-            if let Some(values) = rigid_values(&[(a, b)], &da, &db) {
+            if let Some(values) = rigid_values(&[a], &[b], &da, &db) {
                 prop_assert_eq!(values[0].map(Int::from_i128), exact);
             } else {
                 // Declined only past the bound's guarantee (8F + 4G <= 112
