@@ -335,13 +335,33 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
         .zip(homogeneous(mb))
         .is_some_and(|(x, y)| x == y);
     let mut partners: Vec<(u32, R)> = Vec::new();
+    // Moreover, when `pb` changes sign with the homogeneous index
+    // (`D_B`'s homogeneous entry −1: an ellipsoid's), a partner's term
+    // (before `pa`) is the other's negated: the group `outside_a ∪ {3}`
+    // (A's homogeneous column outside `T`) holds only terms whose `T`
+    // lacks column 3, so holds column 7 (else `P_T = 0`), and these are
+    // exactly the partners of the one-homogeneous terms of the group
+    // `outside_a`. Its inner sum is theirs negated (`partner_sums`): 20 of
+    // the 50 long products by `pb` are not formed.
+    let negated_partners = shared_w && (0..8).all(|s| pb[s | 8] == pb[s].negated());
+    let mut partner_sums: [Option<R>; 8] = std::array::from_fn(|_| None);
     for outside_a in 0u32..16 {
         let in_a = !outside_a & 0xf;
+        if negated_partners && outside_a & 8 != 0 {
+            // Only partners here (no term holds both homogeneous columns).
+            if let Some(sum) = partner_sums[(outside_a & 7) as usize].take() {
+                let index = in_a.count_ones() as usize;
+                coeffs[index].add_product(&pa[outside_a as usize], &sum.negated(), false);
+            }
+            continue;
+        }
         // |T ∩ B| = 4 − |T ∩ A| = |A ∖ T|.
         let mut inner = R::zero();
         // The terms whose `T` holds both homogeneous columns, times `both`
         // once.
         let mut inner_both = R::zero();
+        // The terms with one homogeneous column, when `negated_partners`.
+        let mut one = R::zero();
         for in_b in (0u32..16).filter(|b| b.count_ones() == outside_a.count_ones()) {
             let t = in_a | in_b << 4;
             // A partner's square (see `shared_w`) instead of P_T's Laplace
@@ -379,13 +399,19 @@ pub fn placed_characteristic<R: RingOps + PartialEq>(
             let square = plucker.squared();
             let sum = if both.is_some() && t & HOMOGENEOUS == HOMOGENEOUS {
                 &mut inner_both
+            } else if negated_partners && paired {
+                &mut one
             } else {
                 &mut inner
             };
             sum.add_product(&pb[(!in_b & 0xf) as usize], &square, false);
-            if paired {
+            if paired && !negated_partners {
                 partners.push((key, square));
             }
+        }
+        if !one.is_zero() {
+            inner.plus_assign(&one);
+            partner_sums[outside_a as usize] = Some(one);
         }
         if let Some(factor) = both.filter(|_| !inner_both.is_zero()) {
             inner.add_product(factor, &inner_both, false);
@@ -554,21 +580,27 @@ mod tests {
         }
 
         #[test]
-        fn placed_characteristic_is_det_squared_times_quartic(va in proptest::collection::vec(-9i64..10, 16), vb in proptest::collection::vec(-9i64..10, 16), da in proptest::collection::vec(-9i64..10, 4), db in proptest::collection::vec(-9i64..10, 4), shape in 0u8..3) {
+        fn placed_characteristic_is_det_squared_times_quartic(va in proptest::collection::vec(-9i64..10, 16), vb in proptest::collection::vec(-9i64..10, 16), da in proptest::collection::vec(-9i64..10, 4), db in proptest::collection::vec(-9i64..10, 4), shape in 0u8..4) {
             // Against the quadrics through adjugates: adj(M) = det(M)·M⁻¹, so
             // det(λ·adj(M_A)ᵀD_A·adj(M_A) + adj(M_B)ᵀD_B·adj(M_B)) is
             // det(M_B)^8·det(μA + B) at μ = λ·det(M_A)²/det(M_B)², and the
             // Plücker form is det(M_A)²det(M_B)²·det(μA + B). Shapes: any
             // placements; affine ones, last rows (0, 0, 0, w), the two `w`
-            // independent; affine with one `w` (the partners' squares).
+            // independent; affine with one `w` (the partners' squares);
+            // and with the homogeneous diagonal entries −1 of ellipsoids
+            // (the partners' products by the tables).
             let (mut ma, mut mb) = (mat(&va), mat(&vb));
+            let (mut da, mut db) = (da, db);
+            if shape == 3 {
+                (da[3], db[3]) = (-1, -1);
+            }
             if shape > 0 {
                 for m in [&mut ma, &mut mb] {
                     m[3][..3].iter_mut().for_each(|x| *x = Int::zero());
                 }
                 prop_assert!(is_affine_placement(&ma) && is_affine_placement(&mb));
             }
-            if shape == 2 {
+            if shape >= 2 {
                 mb[3][3] = ma[3][3].clone();
             }
             let (sa, sb) = (det4(&ma), det4(&mb));
