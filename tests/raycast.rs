@@ -504,6 +504,36 @@ fn grazes_and_ends_go_to_algorithm_1() {
     assert!(first.lo <= t && t <= first.hi && first.lo < first.hi);
 }
 
+/// Overlapping at `t0` (B from x = −1, well inside A ⊕ B at the start): a
+/// first-contact query is the ray cast's, its first contact `t0` itself,
+/// proven by the entry before the span and the exit after `t0`; the whole
+/// timeline is Algorithm 1's. The same answers either way.
+#[test]
+fn overlap_at_start_is_the_ray_casts_first_contact() {
+    let unit = [Rat::zero(), Rat::one()];
+    let scene = Scene {
+        b: sphere(2, Bezier::polynomial(vec![point(-1, 0), point(10, 1)])),
+        ..pass(0, unit.clone())
+    };
+    let first = run(&scene, &options(true, true)).expect("runs");
+    assert_eq!(first.stats.path, Path::Raycast);
+    assert_eq!(first.first_contact, Some(Instant::exact(Rat::zero())));
+    assert!(!first.collision_free && !first.complete && first.contacts.is_empty());
+    assert_eq!(first.timeline.len(), 1);
+    assert_eq!(first.timeline[0].state, State::Overlap);
+    check(&scene, true, &[Rat::from_frac(1, 3)]).expect("agrees");
+    let whole = run(&scene, &options(false, true)).expect("runs");
+    assert_eq!(whole.stats.path, Path::Exact);
+    // Leaving before the span: apart throughout, not an overlap.
+    let gone = Scene {
+        b: sphere(2, Bezier::polynomial(vec![point(4, 0), point(10, 0)])),
+        ..pass(0, unit)
+    };
+    let out = run(&gone, &options(true, true)).expect("runs");
+    assert!(out.collision_free);
+    check(&gone, true, &[]).expect("agrees");
+}
+
 /// Numbers beyond `f64` or near its ends are handed to Algorithm 1, and
 /// long-exponent ones within range are the ray cast's; never a wrong
 /// answer, never a panic.

@@ -32,9 +32,11 @@
 //! [`ccd_contact::Goal`]) and returns `None` otherwise — another motion
 //! kind, a ray that grazes `K` (entry and exit not separated, for the
 //! whole timeline; a first contact needs only its entry), a crossing
-//! at `t0` or `t1` or before it, bodies at rest relative to each other, a
-//! width its enclosures do not reach (`--digits` beyond about 15 unless
-//! the instants happen to be that narrow): the caller then runs
+//! at `t0` or `t1` or before it (except a first contact whose ray entered
+//! `K` before the span and is proven still inside at `t0`: an overlap at
+//! `t0`, the first contact `t0` itself), bodies at rest relative to each
+//! other, a width its enclosures do not reach (`--digits` beyond about 15
+//! unless the instants happen to be that narrow): the caller then runs
 //! Algorithm 1.
 //!
 //! ```
@@ -134,11 +136,15 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     // The exit normal (or, when its search left its side, its guess) is
     // polished only when needed: a first contact proven inside the span
     // does not need it.
+    let exit_guess = exit;
     let exit_cell = OnceCell::new();
     let exit = || *exit_cell.get_or_init(|| search::polish(&f, &exit, 1.0).ok_or(exit));
+    // An entry that does not polish signals a near miss; its plane starts
+    // from the two guesses (the exit's, unpolished, is where its own
+    // polish would also fail: 40 f64 Newton steps that change nothing).
     let entry = match search::polish(&f, &entry, -1.0) {
         Some(n) => n,
-        None => return near_miss(entry, exit().unwrap_or_else(|n| n)),
+        None => return near_miss(entry, exit_guess),
     };
     if !options.first_contact_only {
         if let Err(b) = exit() {
@@ -157,9 +163,21 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     let line = line()?;
     let system = verify::System::new(line, fine);
     let crossing = |n: &[f64; 3], side| system.as_ref()?.crossing(n, side);
+    // A first contact whose ray entered `K` before the span and leaves it
+    // after `u = 0` (both crossings proven) overlaps at `t0`: its first
+    // contact is `t0` itself.
+    let overlaps_at_start = || {
+        let exit = exit().ok()?;
+        crossing(&exit, 1.0).filter(|out| out.u.lo > 0.0)
+    };
     let inn = match crossing(&entry, -1.0) {
         Some(inn) if inn.u.lo > 0.0 && inn.u.hi < 1.0 => inn,
         Some(inn) if inn.u.lo > 1.0 => return apart(),
+        Some(inn)
+            if options.first_contact_only && inn.u.hi < 0.0 && overlaps_at_start().is_some() =>
+        {
+            return Some(Answer::OverlapsAtStart.outcome(scene, options));
+        }
         _ => {
             return match exit() {
                 Err(b) => near_miss(entry, b),
@@ -195,6 +213,9 @@ enum Answer {
     /// second when it is inside `(0, 1)` and asked for, otherwise still
     /// overlapping at `u = 1` (or not asked: a first-contact query).
     Crosses(Contact, Option<Contact>),
+    /// Overlapping at `u = 0`: the first contact is `t0` (a first-contact
+    /// query, which stops there).
+    OverlapsAtStart,
 }
 
 /// A proven crossing in the contract's terms: its instant in time and,
@@ -298,8 +319,13 @@ impl Answer {
         // Each list allocated once, at its final size.
         let mut contacts = Vec::new();
         let mut geometry = Vec::new();
+        let mut first = None;
         let timeline = match self {
             Answer::Apart => vec![segment(State::Separate, &t0, &t1)],
+            Answer::OverlapsAtStart => {
+                first = Some(t0.clone());
+                vec![segment(State::Overlap, &t0, &t0)]
+            }
             Answer::Crosses(inn, out) => {
                 let i = &inn.instant;
                 let mut timeline = Vec::with_capacity(5);
@@ -329,12 +355,13 @@ impl Answer {
         } else {
             Vec::new()
         };
+        let first = first.or_else(|| contacts.first().cloned());
         Outcome {
             span: span.clone(),
-            collision_free: contacts.is_empty(),
+            collision_free: first.is_none(),
             undecided: None,
-            first_contact: contacts.first().cloned(),
-            complete: !options.first_contact_only || contacts.is_empty(),
+            complete: !options.first_contact_only || first.is_none(),
+            first_contact: first,
             contacts,
             timeline,
             gaps: Vec::new(),
