@@ -3,7 +3,7 @@
 # alone) and FCL (sampling CCD, 100 samples) on the straight-line scenes, in
 # one run: prints the markdown of docs/table4.md's "Against FLINT and FCL".
 #
-#   bash benches/compare/run.sh [--reps N] > /tmp/compare.md
+#   bash benches/compare/run.sh [--reps N] [--passes N] > /tmp/compare.md
 #
 # Creates a venv under target/compare-venv (python-flint, python-fcl,
 # numpy from PyPI) once, builds the release binary and the examples `speed`
