@@ -140,8 +140,9 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     let exit_cell = OnceCell::new();
     let exit = || *exit_cell.get_or_init(|| search::polish(&f, &exit, 1.0).ok_or(exit));
     // An entry that does not polish signals a near miss; its plane starts
-    // from the two guesses (the exit's, unpolished, is where its own
-    // polish would also fail: 40 f64 Newton steps that change nothing).
+    // from the two unpolished guesses. Polishing the exit there (40 `f64`
+    // Newton steps) fails as a rule and gives back the same guess; either
+    // start only seeds `search::parallel`, whose plane `verify` proves.
     let entry = match search::polish(&f, &entry, -1.0) {
         Some(n) => n,
         None => return near_miss(entry, exit_guess),
