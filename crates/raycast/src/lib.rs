@@ -143,15 +143,20 @@ pub fn run(scene: &Scene, options: &Options) -> Option<Outcome> {
     // from the two unpolished guesses. Polishing the exit there (40 `f64`
     // Newton steps) fails as a rule and gives back the same guess; either
     // start only seeds `search::parallel`, whose plane `verify` proves.
-    let entry = match search::polish(&f, &entry, -1.0) {
-        Some(n) => n,
+    let entry = match search::polished(&f, &entry, -1.0) {
+        Some(p) => p,
         None => return near_miss(entry, exit_guess),
     };
-    if !options.first_contact_only {
+    // The whole timeline needs the exit; a first contact only when the
+    // entry stopped at the noise floor (a graze or a near miss), where an
+    // exit that does not polish shows a near miss before the entry's
+    // proof, which there fails only after all its double-word steps.
+    if !options.first_contact_only || !entry.converged {
         if let Err(b) = exit() {
-            return near_miss(entry, b);
+            return near_miss(entry.normal, b);
         }
     }
+    let entry = entry.normal;
     // A crossing of the line: the double words first (the crossing's
     // proof needs them), then the intervals from them.
     // The proof of the entry comes first: for a crossing inside the span

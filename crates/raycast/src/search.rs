@@ -131,6 +131,22 @@ pub fn inverse2(m: &[[f64; 2]; 2]) -> Option<[[f64; 2]; 2]> {
 /// `None` when the side is left, or when the steps neither converge nor
 /// end shorter than `NOISE_FLOOR` (10⁻⁶).
 pub fn polish(line: &Line<f64>, n: &V3<f64>, side: f64) -> Option<V3<f64>> {
+    polished(line, n, side).map(|p| p.normal)
+}
+
+/// A normal from [`polish`], and how its steps ended.
+#[derive(Clone, Copy, Debug)]
+pub struct Polished {
+    /// The unit normal.
+    pub normal: V3<f64>,
+    /// Whether the steps converged (a last step below `10⁻¹²`), rather
+    /// than stopping at the noise floor that `f64` rounding leaves near a
+    /// graze or a near miss.
+    pub converged: bool,
+}
+
+/// [`polish`], saying whether the steps converged.
+pub fn polished(line: &Line<f64>, n: &V3<f64>, side: f64) -> Option<Polished> {
     let mut n = unit(n)?;
     let mut last = f64::INFINITY;
     for _ in 0..MAX_STEPS {
@@ -161,14 +177,20 @@ pub fn polish(line: &Line<f64>, n: &V3<f64>, side: f64) -> Option<V3<f64>> {
         }
         n = unit(&axpy(&axpy(&n, w[0], &e[0]), w[1], &e[1]))?;
         if len < CONVERGED {
-            return Some(n);
+            return Some(Polished {
+                normal: n,
+                converged: true,
+            });
         }
         last = len;
     }
     // Near a graze f64 rounding leaves a noise floor above CONVERGED (∇φ
     // is a cancellation divided by a small n·v): a normal that close is
     // what the double-word steps of the proof start from.
-    (last < NOISE_FLOOR).then_some(n)
+    (last < NOISE_FLOOR).then_some(Polished {
+        normal: n,
+        converged: false,
+    })
 }
 
 /// A plane parallel to the ray that keeps it outside `K`, for a ray that
@@ -239,6 +261,27 @@ mod tests {
         assert!((jet(&l, &m).phi - (10.0 + 8f64.sqrt()) / 20.0).abs() < 1e-15);
         // The normal at the entry points from the ball's centre to it.
         assert!((n[0] + 8f64.sqrt() / 3.0).abs() < 1e-12 && (n[1] - 1.0 / 3.0).abs() < 1e-12);
+    }
+
+    /// A clean crossing's normals converge; a ray that only grazes the
+    /// ball (overlap depth 10⁻¹²) leaves the entry's steps at the noise
+    /// floor, which [`polished`] reports.
+    #[test]
+    fn polishing_says_whether_it_converged() {
+        let clean = spheres([-10.0, 1.0, 0.0], [20.0, 0.0, 0.0]);
+        let Some(Guess::Crosses { entry, .. }) = guess(&clean) else {
+            panic!("the ray crosses")
+        };
+        assert!(polished(&clean, &entry, -1.0).expect("entry").converged);
+        let graze = spheres([-10.0, 3.0 - 1e-12, 0.0], [20.0, 0.0, 0.0]);
+        let Some(Guess::Crosses { entry, .. }) = guess(&graze) else {
+            panic!("the ray crosses")
+        };
+        assert!(
+            !polished(&graze, &entry, -1.0)
+                .expect("stops at the noise floor")
+                .converged
+        );
     }
 
     #[test]
