@@ -289,6 +289,25 @@ def fmt_us(x):
     return f"{x:.0f}" if x >= 100 else f"{x:.1f}"
 
 
+def ours_and_flint(args, path, coeffs):
+    """One pass over a scene for `fastest`: our medians (`speed_table`:
+    exact total and first contact, `--raycast` total and first contact, and
+    the path that answered `--raycast`) and FLINT's on `coeffs`, with its
+    number of distinct roots."""
+    name = os.path.basename(path)
+    ours = speed_table(args.speed, args.root, [path], args.reps)[name]
+    flint_us, n_roots = flint_roots(coeffs, args.reps)
+    return {
+        "exact_us": ours[0],
+        "first_us": ours[1],
+        "ray_us": ours[2],
+        "ray_first_us": ours[3],
+        "ray_path": ours[4],
+        "n_roots": n_roots,
+        "flint_us": flint_us,
+    }
+
+
 def fastest(passes, paths, once):
     """`once(path)` (a dict of times and facts) for every path, `passes`
     times over the whole list (so that a slow spell of the machine falls on
@@ -324,21 +343,13 @@ def measure(args):
     def once(path):
         name = os.path.basename(path)
         scene = read_scene(os.path.join(root, path))
-        ours = speed_table(args.speed, root, [path], args.reps)[name]
-        _, coeffs = polys[name]
-        flint_us, n_roots = flint_roots(coeffs, args.reps)
-        fcl_us = fcl_time(scene, request, args.reps)
-        log(f"  {name}: ours {ours[0]:.0f} µs, FLINT {flint_us:.0f} µs, FCL {fcl_us:.0f} µs")
-        return {
-            "exact_us": ours[0],
-            "first_us": ours[1],
-            "ray_us": ours[2],
-            "ray_first_us": ours[3],
-            "ray_path": ours[4],
-            "n_roots": n_roots,
-            "flint_us": flint_us,
-            "fcl_us": fcl_us,
-        }
+        times = ours_and_flint(args, path, polys[name][1])
+        times["fcl_us"] = fcl_time(scene, request, args.reps)
+        log(
+            f"  {name}: ours {times['exact_us']:.0f} µs, FLINT {times['flint_us']:.0f} µs, "
+            f"FCL {times['fcl_us']:.0f} µs"
+        )
+        return times
 
     times = fastest(args.passes, paths, once)
     rows = []
@@ -393,19 +404,9 @@ def flint_only(args, exclude):
 
     def once(path):
         name = os.path.basename(path)
-        ours = speed_table(args.speed, args.root, [path], args.reps)[name]
-        _, coeffs = polys[name]
-        flint_us, n_roots = flint_roots(coeffs, args.reps)
-        log(f"  {name}: ours {ours[0]:.0f} µs, FLINT {flint_us:.0f} µs")
-        return {
-            "exact_us": ours[0],
-            "first_us": ours[1],
-            "ray_us": ours[2],
-            "ray_first_us": ours[3],
-            "ray_path": ours[4],
-            "n_roots": n_roots,
-            "flint_us": flint_us,
-        }
+        times = ours_and_flint(args, path, polys[name][1])
+        log(f"  {name}: ours {times['exact_us']:.0f} µs, FLINT {times['flint_us']:.0f} µs")
+        return times
 
     times = fastest(args.passes, paths, once)
     rows = []
