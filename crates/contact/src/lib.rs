@@ -744,6 +744,14 @@ pub use least_point::{interiors_meet, least_point};
 /// exact zeros exact (`0·x = 0`, `0 + x = x`, both exact) and moves a
 /// subnormal end outward to `±2⁻¹⁰²²` or to 0 (still an enclosure, only
 /// wider by less than `2⁻¹⁰²²`).
+///
+/// Its sum, difference and product are never inlined: the contact
+/// formulas ([`from_quadrics`], the placements at an instant) are
+/// straight-line code run once a contact, and inlined they were about
+/// 39 KB of instructions touched once a query, evicting the rest of the
+/// exact path from the instruction cache. Called, they are about 15 KB:
+/// the degree-2 rigid query 54.5 → 51.2 µs for 1.3 % more instructions
+/// (docs/table4.md, issue 17, session 39).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fast(pub Interval);
 
@@ -785,6 +793,7 @@ impl RingOps for Fast {
     fn is_zero(&self) -> bool {
         self.0.lo == 0.0 && self.0.hi == 0.0
     }
+    #[inline(never)]
     fn plus(&self, o: &Self) -> Self {
         match (self.is_zero(), o.is_zero()) {
             (true, _) => *o,
@@ -792,6 +801,7 @@ impl RingOps for Fast {
             _ => Fast::flushed(self.0 + o.0),
         }
     }
+    #[inline(never)]
     fn minus(&self, o: &Self) -> Self {
         match (self.is_zero(), o.is_zero()) {
             (true, _) => Fast(-o.0),
@@ -799,6 +809,7 @@ impl RingOps for Fast {
             _ => Fast::flushed(self.0 - o.0),
         }
     }
+    #[inline(never)]
     fn times(&self, o: &Self) -> Self {
         if self.is_zero() || o.is_zero() {
             return Fast::zero();
