@@ -608,6 +608,16 @@ impl ClosedForm {
         j * self.f.f.degree() as i64 * weight(self.q) + self.f.sigma_exp(self.q)
     }
 
+    /// The closed form over double-word balls of `f_k(x)` (Horner without
+    /// the derivatives) at the dyadic `x`, balanced ([`ClosedForm::balanced_of`]):
+    /// the ball `r` and the exponent `undo` with `Q = 2^undo·r`.
+    fn balanced_value(&self, x: &Rat) -> Option<(DwBall, i64)> {
+        let xb = DwBall::exactly(x)?;
+        let balls = self.coefficient_balls();
+        let values: [DwBall; 5] = std::array::from_fn(|k| ball_value(&balls[k], &xb));
+        Some(self.balanced_of(|i| ball_log2(&values[i]), |i, k| values[i].mul_pow2(k)))
+    }
+
     /// The closed form over double-word jets balanced into `f64`'s range
     /// ([`balancing`], by the sizes `log2` of the values), jet `i` times
     /// `2^k` given by `scaled(i, k)`: the result `r` and the exponent
@@ -709,11 +719,33 @@ impl SignModel for ClosedForm {
     /// the sign of `q(x)` where the ball excludes zero, at about half the
     /// jet's cost.
     fn ball_sign_at(&self, x: &Rat) -> Option<i32> {
-        let xb = DwBall::exactly(x)?;
-        let balls = self.coefficient_balls();
-        let values: [DwBall; 5] = std::array::from_fn(|k| ball_value(&balls[k], &xb));
-        let (q, _) = self.balanced_of(|i| ball_log2(&values[i]), |i, k| values[i].mul_pow2(k));
+        let (q, _) = self.balanced_value(x)?;
         q.sign().filter(|s| *s != 0)
+    }
+
+    /// The value of [`SignModel::ball_sign_at`] (scaled back, as
+    /// [`SignModel::ball_jet_at`]'s) and the closed form over `f64`
+    /// interval dual numbers of `(f_k, f_k′)` over `x` for the slope:
+    /// about half the cost of the double-word jet, whose dual numbers of
+    /// balls triple the balls' products.
+    fn ball_value_and_slope_over(&self, m: &Rat, x: Interval) -> Option<BallJet> {
+        let j = m.dyadic_exponent()? as i64;
+        let (q, undo) = self.balanced_value(m)?;
+        let value = q.mul_pow2(undo);
+        let values = self.box_values(x);
+        let slopes = ScaledPoly::enclose_slopes_each(self.f.views.each_ref(), x);
+        let duals: [Dual<Interval>; 5] = std::array::from_fn(|k| Dual {
+            v: values[k],
+            d: slopes[k],
+        });
+        let slope = DwBall::from_interval(self.of(&duals).d);
+        let scale = self.jet_scale(j);
+        (value.is_known() && slope.is_known()).then_some(BallJet {
+            value,
+            slope,
+            value_exp: scale,
+            slope_exp: scale,
+        })
     }
 
     /// The closed form of the exact jets `(F_k, G_k)` at `m` (cached for
@@ -1093,6 +1125,23 @@ mod tests {
                     prop_assert!(in_ball(ball.slope, &slope));
                     prop_assert_eq!(ball.slope_exp, model.exact_jet_at(&m).slope_exp);
                 }
+                // The cheaper jet over an interval around m: the value at
+                // m, on the jet's exponents, and a slope that holds q′ at m
+                // and at both ends (the mean value form reads it anywhere
+                // in the interval).
+                let (lo, hi) = (&m - &Rat::from_frac(1, 16), &m + &Rat::from_frac(1, 16));
+                let around = Interval::from_rat(&lo).hull(&Interval::from_rat(&hi));
+                if let Some(cheap) = model.ball_value_and_slope_over(&m, around) {
+                    let in_ball = |b: DwBall, r: &Rat| b.ends().is_some_and(|(lo, hi)| lo <= *r && *r <= hi);
+                    prop_assert!(in_ball(cheap.value, &value), "{:?} at {}", q, m);
+                    for at in [&lo, &m, &hi] {
+                        prop_assert!(in_ball(cheap.slope, &sigma(exact.derivative().eval_rat(at))), "{:?} at {}", q, at);
+                    }
+                    let jet = model.exact_jet_at(&m);
+                    prop_assert_eq!((cheap.value_exp, cheap.slope_exp), (jet.value_exp, jet.slope_exp));
+                } else {
+                    prop_assert!(ball.is_none(), "{:?} at {}", q, m);
+                }
                 // The value-only ball's sign, where it decides, is the
                 // exact one; and it decides wherever the jet's value does.
                 let sign = model.ball_sign_at(&m);
@@ -1113,7 +1162,8 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(64))]
         /// Roots of each closed form, isolated and refined through its
         /// model (the step past the float resolution from the model's
-        /// double-word jet, its cuts signed by value-only balls, and the
+        /// cheaper jet, its cuts signed by the mean value form, else from
+        /// the double-word jet, its cuts signed by value-only balls, and the
         /// exact steps below it): every enclosure meets the target and
         /// holds a sign change of the exact polynomial (or is its exact
         /// root), at `10^(−15)` and `10^(−40)`, with the coefficients' sizes

@@ -253,6 +253,17 @@ pub trait SignModel {
     fn ball_jet_at(&self, _m: &Rat) -> Option<BallJet> {
         None
     }
+    /// A cheaper jet for a Newton step past the float resolution at the
+    /// dyadic `m ∈ x`: `σ·q(m)` in a double-word ball, as
+    /// [`SignModel::ball_jet_at`]'s value, and the `f64` enclosure of
+    /// `σ·q′` over the whole interval `x`, which holds `σ·q′(m)` and, by
+    /// the mean value theorem, signs `q(c) ∈ q(m) + q′(x)·(c − m)` at
+    /// every `c ∈ x` with no evaluation there. Exponents as
+    /// [`SignModel::ball_jet_at`]'s. `None` (the default) when the model
+    /// has no such view, or its slope is not cheaper than the jet's.
+    fn ball_value_and_slope_over(&self, _m: &Rat, _x: Interval) -> Option<BallJet> {
+        None
+    }
     /// The sign of `q(x)` at a dyadic `x` when a double-word ball of it
     /// excludes zero; `None` otherwise. The default reads the value of
     /// [`SignModel::ball_jet_at`].

@@ -6,7 +6,7 @@
 use crate::ball::{JetBall, Scaled};
 use crate::local::{Cost, Local};
 use crate::model::{BallJet, ExactJet, SignModel, SignProbe};
-use ccd_arith::{sign_variations, Int, Interval, Rat};
+use ccd_arith::{sign_variations, Int, Interval, Rat, RingOps};
 use ccd_poly::{Bernstein, ZPoly};
 use std::sync::Arc;
 
@@ -164,6 +164,12 @@ fn step_floor_f64(x: f64, k: i64, jet: &BallJet) -> Option<Int> {
     let e = lo.floor();
     (e == hi.floor() && e.abs() < 2f64.powi(53))
         .then(|| &Int::from(whole as i64) + &Int::from(e as i64))
+}
+
+/// `⌊2^k·(m − q(m)/q′(m))⌋` at the dyadic `m = x` from a double-word jet
+/// there: [`step_floor_f64`], else [`step_floor`] on the rational ends.
+fn ball_step_floor(x: f64, m: &Rat, k: i64, jet: &BallJet) -> Option<Int> {
+    step_floor_f64(x, k, jet).or_else(|| step_floor(&m.mul_pow2(k), k, jet))
 }
 
 /// `⌊2^k·(m − q(m)/q′(m))⌋` from the exact jet at the dyadic `m = a/2^j`
@@ -465,7 +471,7 @@ impl<M: SignModel + Clone> RealRoot<M> {
             .max(4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE))
             .max(2.0 * resolution);
         if quarter < eps {
-            if self.past_float_jump(x, target) {
+            if self.past_float_jump(x, 2.0 * eps, target) {
                 return Jump::Progress;
             }
             // It may have moved an end.
@@ -515,7 +521,15 @@ impl<M: SignModel + Clone> RealRoot<M> {
     /// (there both cuts would fall on one side of the root, and the
     /// double-word balls could not pin `n` anyway), which is left to the
     /// float cuts and the exact Newton steps, whose bits double.
-    fn past_float_jump(&mut self, x: f64, target: &Rat) -> bool {
+    ///
+    /// The step is first tried from the model's cheaper jet over `[x −
+    /// reach, x + reach]` ([`SignModel::ball_value_and_slope_over`]: the
+    /// value's double-word ball at `m` and the slope's `f64` enclosure over
+    /// the whole reach, as the root's float resolution puts the cuts
+    /// within it); where it pins `n` down, that is the same `n`, and a cut
+    /// within the reach is signed by the mean value form `q(m) +
+    /// q′(reach)·(c − m)` instead of an evaluation at it.
+    fn past_float_jump(&mut self, x: f64, reach: f64, target: &Rat) -> bool {
         let k = neg_log2(target) + 3;
         if k as f64 > 96.0 - x.abs().max(f64::MIN_POSITIVE).log2() {
             return false;
@@ -523,13 +537,32 @@ impl<M: SignModel + Clone> RealRoot<M> {
         let Some(m) = Rat::from_f64_exact(x) else {
             return false;
         };
-        let Some(n) = self.newton_floor(x, &m, k) else {
-            return false;
+        let over = Interval::new((x - reach).next_down(), (x + reach).next_up());
+        let cheap = (!self.balls_fail)
+            .then(|| self.base.ball_value_and_slope_over(&m, over))
+            .flatten()
+            .and_then(|jet| Some((ball_step_floor(x, &m, k, &jet)?, jet)));
+        let (n, jet) = match cheap {
+            Some((n, jet)) => (n, Some(jet)),
+            None => match self.newton_floor(x, &m, k) {
+                Some(n) => (n, None),
+                None => return false,
+            },
+        };
+        let mean_value = |x: &Rat| {
+            let jet = jet.as_ref()?;
+            let c = Interval::from_rat(x);
+            if !(over.lo <= c.lo && c.hi <= over.hi) {
+                return None;
+            }
+            let d = jet.value.enclose_rat(&(x - &m));
+            let at = jet.value.plus(&jet.slope.times(&d));
+            at.sign_of().filter(|s| *s != 0)
         };
         self.cut_both(
             Rat::dyadic(&n - &Int::from(2), k as u64),
             Rat::dyadic(&n + &Int::from(3), k as u64),
-            |root: &RealRoot<M>, x: &Rat| Some(root.cut_sign(x)),
+            |root: &RealRoot<M>, x: &Rat| Some(mean_value(x).unwrap_or_else(|| root.cut_sign(x))),
         );
         self.sign_lo == 0 || self.width() <= *target
     }
@@ -543,11 +576,11 @@ impl<M: SignModel + Clone> RealRoot<M> {
         // `2^k·m`, formed only where the `f64` pin does not decide.
         let scaled = || m.mul_pow2(k);
         if !self.balls_fail {
-            let jet = self.base.ball_jet_at(m);
-            let pinned = |jet: BallJet| {
-                step_floor_f64(x, k, &jet).or_else(|| step_floor(&scaled(), k, &jet))
-            };
-            if let Some(n) = jet.and_then(pinned) {
+            if let Some(n) = self
+                .base
+                .ball_jet_at(m)
+                .and_then(|jet| ball_step_floor(x, m, k, &jet))
+            {
                 return Some(n);
             }
             self.balls_fail = true;

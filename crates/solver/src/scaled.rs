@@ -131,6 +131,22 @@ impl ScaledPoly {
         )
     }
 
+    /// The first derivatives of [`ScaledPoly::enclose_derivatives_each`]
+    /// alone, bit for bit (the same Horner sums, without the second's).
+    pub fn enclose_slopes_each<const N: usize>(
+        polys: [&ScaledPoly; N],
+        x: Interval,
+    ) -> [Interval; N] {
+        horner_passes(
+            polys.map(|p| p.derived()),
+            1,
+            Interval::point(0.0),
+            x,
+            Interval::is_finite,
+            |d1, _, d, mul_add| mul_add(d1, d[0]),
+        )
+    }
+
     /// `(p(x), p'(x))` approximately, scaled.
     pub fn value_and_slope(&self, x: f64) -> (f64, f64) {
         let [vd] = ScaledPoly::value_and_slope_each([self], x);
