@@ -153,6 +153,25 @@ impl FilterBernstein {
             .map(|(&b, &e)| certified_sign(b, e))
     }
 
+    /// The sign variations of the coefficients and their first and last
+    /// signs, when every sign is certified and none is zero (the usual
+    /// node): one pass with no branch per coefficient, where a change is
+    /// any neighbour of the other sign. `None` otherwise (an undecided
+    /// sign or an exact zero: a pass over [`FilterBernstein::signs`]
+    /// decides those).
+    pub(crate) fn nonzero_variations(&self) -> Option<(usize, i32, i32)> {
+        let sign = |(&b, &e): (&f64, &f64)| i32::from(b > e) - i32::from(b < -e);
+        let mut signs = self.coeffs.iter().zip(&self.errs).map(sign);
+        let first = signs.next()?;
+        let (mut var, mut last, mut zero) = (0usize, first, first == 0);
+        for s in signs {
+            zero |= s == 0;
+            var += usize::from(s != last);
+            last = s;
+        }
+        (!zero).then_some((var, first, last))
+    }
+
     /// Whether every coefficient's sign is certified.
     pub(crate) fn decided(&self) -> bool {
         self.signs().all(|s| s.is_some())
@@ -390,6 +409,30 @@ mod tests {
             for (got, want) in l.second_difference_signs().zip(exact(&left)) {
                 proptest::prop_assert!(got.is_none_or(|g| g == want));
             }
+        }
+    }
+
+    proptest::proptest! {
+        /// The branch-free count is the count over the signs one by one:
+        /// coefficients of every sign, undecided ones and exact zeros.
+        #[test]
+        fn nonzero_variations_count_the_sign_changes(
+            raw in proptest::collection::vec((-3i32..4, 0u8..4), 1..40),
+        ) {
+            // (value, error): decided, undecided (error past the value), or
+            // the exact zero 0 ± 0.
+            let (coeffs, errs): (Vec<f64>, Vec<f64>) = raw
+                .iter()
+                .map(|&(v, e)| (f64::from(v), if e == 3 { f64::from(v.abs()) + 1.0 } else { f64::from(e) * 0.25 }))
+                .map(|(v, e)| if v == 0.0 && e < 1.0 { (0.0, 0.0) } else { (v, e) })
+                .unzip();
+            let fb = FilterBernstein { coeffs, errs };
+            let signs: Option<Vec<i32>> = fb.signs().collect();
+            let expected = signs.filter(|s| s.iter().all(|&x| x != 0)).map(|s| {
+                let var = s.windows(2).filter(|w| w[0] != w[1]).count();
+                (var, s[0], s[s.len() - 1])
+            });
+            proptest::prop_assert_eq!(fb.nonzero_variations(), expected);
         }
     }
 

@@ -246,7 +246,10 @@ impl Node {
     /// leaves one open).
     fn signs(&self) -> Option<SignSummary> {
         match &self.coeffs {
-            Coeffs::Filter(f) => SignSummary::of(f.signs()),
+            Coeffs::Filter(f) => match f.nonzero_variations() {
+                Some((var, first, last)) => Some(SignSummary { var, first, last }),
+                None => SignSummary::of(f.signs()),
+            },
             Coeffs::Exact(b) => {
                 let s = b.scale().signum();
                 SignSummary::of(b.coeffs().iter().map(|c| Some(c.signum() * s)))
