@@ -65,6 +65,23 @@ fn step_away(y: f64) -> f64 {
     }
 }
 
+/// [`up`] on both lanes of an SSE2 register, bit for bit: `+0` for `−0`
+/// first, NaN and `+∞` kept as they are, every other float one step of
+/// its bit pattern up (as [`step_away`], on two lanes).
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn up2(x: std::arch::x86_64::__m128d) -> std::arch::x86_64::__m128d {
+    use std::arch::x86_64::*;
+    let y = _mm_add_pd(x, _mm_setzero_pd());
+    let v = _mm_castpd_si128(y);
+    // Each lane's high-half sign spread to its 64 bits: all ones or zero.
+    let sign = _mm_shuffle_epi32::<0b11_11_01_01>(_mm_srai_epi32::<31>(v));
+    let step = _mm_or_si128(sign, _mm_set1_epi64x(1));
+    let stepped = _mm_castsi128_pd(_mm_add_epi64(v, step));
+    let finite = _mm_cmplt_pd(y, _mm_set1_pd(f64::INFINITY));
+    _mm_or_pd(_mm_and_pd(finite, stepped), _mm_andnot_pd(finite, x))
+}
+
 /// `x.next_down()`, bit for bit: `−(−x).next_up()` (negation only flips
 /// the sign bit, NaN included).
 #[inline]
@@ -161,13 +178,57 @@ impl Interval {
     /// this step, test only their results, and redo a pass whose result is
     /// not finite with `mul_fast` and `+`. (For `x` outside that range the
     /// result may be finite and wrong.)
+    ///
+    /// On x86_64 both ends go through one SSE2 register as `(−lo, hi)`,
+    /// where every widening is upward: `down(v) = −up(−v)` and IEEE
+    /// negation and rounding to nearest commute, so the lanes give the
+    /// scalar formula's bits (the tests `unchecked_step_is_mul_fast_and_sum`
+    /// and `unchecked_step_keeps_the_scalar_bits`).
     #[inline]
     pub fn mul_add_nonneg_unchecked(self, x: Interval, c: Interval) -> Interval {
         debug_assert!(0.0 <= x.lo && x.lo <= x.hi && x.hi < f64::INFINITY);
-        let (lo, hi) = self.nonneg_corners(x);
+        #[cfg(target_arch = "x86_64")]
+        {
+            // SAFETY: SSE2 is part of the x86_64 baseline; register
+            // operations only.
+            unsafe { self.mul_add_nonneg_sse2(x, c) }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let (lo, hi) = self.nonneg_corners(x);
+            Interval {
+                lo: down(down(lo) + c.lo),
+                hi: up(up(hi) + c.hi),
+            }
+        }
+    }
+
+    /// [`Interval::mul_add_nonneg_unchecked`] with both ends in one
+    /// register: lane 0 holds `−lo`, lane 1 `hi`. The corner factor of
+    /// each end is picked by that end's sign (as in `nonneg_corners`), the
+    /// product of `−lo` is `−(lo·f)` exactly, and [`up`] on both lanes is
+    /// `down` on `lo` and `up` on `hi`.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn mul_add_nonneg_sse2(self, x: Interval, c: Interval) -> Interval {
+        use std::arch::x86_64::*;
+        // The sign bit of lane 0 only.
+        let flip = _mm_set_pd(0.0, -0.0);
+        let ends = _mm_set_pd(self.hi, self.lo);
+        // Lane 0: lo ≥ 0 picks x.lo, else x.hi; lane 1: hi ≥ 0 picks
+        // x.hi, else x.lo (a NaN end picks the second, as `>=` does).
+        let straight = _mm_set_pd(x.hi, x.lo);
+        let crossed = _mm_set_pd(x.lo, x.hi);
+        let keep = _mm_cmpge_pd(ends, _mm_setzero_pd());
+        let factor = _mm_or_pd(_mm_and_pd(keep, straight), _mm_andnot_pd(keep, crossed));
+        let product = up2(_mm_mul_pd(_mm_xor_pd(ends, flip), factor));
+        let sum = up2(_mm_add_pd(
+            product,
+            _mm_xor_pd(_mm_set_pd(c.hi, c.lo), flip),
+        ));
         Interval {
-            lo: down(down(lo) + c.lo),
-            hi: up(up(hi) + c.hi),
+            lo: -_mm_cvtsd_f64(sum),
+            hi: _mm_cvtsd_f64(_mm_unpackhi_pd(sum, sum)),
         }
     }
 
@@ -809,6 +870,24 @@ mod tests {
     }
 
     proptest! {
+        /// The SSE2 step is the scalar formula, bit for bit (a NaN end, of
+        /// either sign, where the formula's is NaN: the callers only test
+        /// that a result is finite).
+        #[test]
+        fn unchecked_step_keeps_the_scalar_bits(
+            a in special_f64(), b in special_f64(), c0 in special_f64(), c1 in special_f64(),
+            x0 in 0f64..1e300, w in 0f64..1e300,
+        ) {
+            // The formula the SSE2 lanes stand for, end by end.
+            let (acc, c) = (Interval::new(a.min(b), a.max(b)), Interval::new(c0.min(c1), c0.max(c1)));
+            let x = Interval::new(x0, (x0 + w).min(f64::MAX));
+            let (lo, hi) = acc.nonneg_corners(x);
+            let want = Interval { lo: down(down(lo) + c.lo), hi: up(up(hi) + c.hi) };
+            let got = acc.mul_add_nonneg_unchecked(x, c);
+            let same = |g: f64, w: f64| g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan());
+            prop_assert!(same(got.lo, want.lo) && same(got.hi, want.hi), "{:?}·{:?} + {:?}: {:?}, not {:?}", acc, x, c, got, want);
+        }
+
         /// The widening steps are the standard library's, bit for bit.
         #[test]
         fn widening_steps_are_next_up_and_down(x in special_f64()) {
