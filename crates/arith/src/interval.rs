@@ -876,7 +876,8 @@ mod tests {
         #[test]
         fn unchecked_step_keeps_the_scalar_bits(
             a in special_f64(), b in special_f64(), c0 in special_f64(), c1 in special_f64(),
-            x0 in 0f64..1e300, w in 0f64..1e300,
+            x0 in prop_oneof![0f64..1e300, 0f64..1e-300, Just(0.0), Just(-0.0), Just(f64::from_bits(1)), Just(f64::MIN_POSITIVE)],
+            w in prop_oneof![0f64..1e300, 0f64..1e-300, Just(0.0), Just(f64::from_bits(1))],
         ) {
             // The formula the SSE2 lanes stand for, end by end.
             let (acc, c) = (Interval::new(a.min(b), a.max(b)), Interval::new(c0.min(c1), c0.max(c1)));

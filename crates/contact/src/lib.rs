@@ -750,7 +750,7 @@ pub use least_point::{interiors_meet, least_point};
 /// straight-line code run once a contact, and inlined they were about
 /// 39 KB of instructions touched once a query, evicting the rest of the
 /// exact path from the instruction cache. Called, they are about 15 KB:
-/// the degree-2 rigid query 54.5 → 51.2 µs for 1.3 % more instructions
+/// the degree-2 rigid query 54.5 → 51.2 µs for 1.3–2 % more instructions
 /// (docs/table4.md, issue 17, session 39).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fast(pub Interval);

@@ -729,6 +729,10 @@ impl SignModel for ClosedForm {
     /// about half the cost of the double-word jet, whose dual numbers of
     /// balls triple the balls' products.
     fn ball_value_and_slope_over(&self, m: &Rat, x: Interval) -> Option<BallJet> {
+        debug_assert!({
+            let at = Interval::from_rat(m);
+            x.lo <= at.lo && at.hi <= x.hi
+        });
         let j = m.dyadic_exponent()? as i64;
         let (q, undo) = self.balanced_value(m)?;
         let value = q.mul_pow2(undo);
@@ -1139,9 +1143,10 @@ mod tests {
                     }
                     let jet = model.exact_jet_at(&m);
                     prop_assert_eq!((cheap.value_exp, cheap.slope_exp), (jet.value_exp, jet.slope_exp));
-                } else {
-                    prop_assert!(ball.is_none(), "{:?} at {}", q, m);
                 }
+                // (None is allowed where the point jet is known: a slope
+                // over the interval may leave f64's range; the step then
+                // takes the jet.)
                 // The value-only ball's sign, where it decides, is the
                 // exact one; and it decides wherever the jet's value does.
                 let sign = model.ball_sign_at(&m);

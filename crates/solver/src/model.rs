@@ -258,7 +258,8 @@ pub trait SignModel {
     /// [`SignModel::ball_jet_at`]'s value, and the `f64` enclosure of
     /// `σ·q′` over the whole interval `x`, which holds `σ·q′(m)` and, by
     /// the mean value theorem, signs `q(c) ∈ q(m) + q′(x)·(c − m)` at
-    /// every `c ∈ x` with no evaluation there. Exponents as
+    /// every `c ∈ x` with no evaluation there. The caller guarantees
+    /// `m ∈ x`: the mean value form rests on it. Exponents as
     /// [`SignModel::ball_jet_at`]'s. `None` (the default) when the model
     /// has no such view, or its slope is not cheaper than the jet's.
     fn ball_value_and_slope_over(&self, _m: &Rat, _x: Interval) -> Option<BallJet> {

@@ -337,7 +337,8 @@ mod tests {
         /// Three polynomials of different lengths or of one (none, a
         /// constant, up to degree 13) in lockstep give each one's own
         /// values bit for bit:
-        /// enclosures, derivatives and the plain `f64` value and slope.
+        /// enclosures, derivatives (the first alone too) and the plain
+        /// `f64` value and slope.
         #[test]
         fn lockstep_is_each_alone(
             mut raw in proptest::collection::vec(proptest::collection::vec(any::<i64>(), 0..15), 3),
@@ -357,9 +358,11 @@ mod tests {
             let x = Interval::new(lo, lo + w);
             let (values, derivatives) = (ScaledPoly::enclose_each(each, x), ScaledPoly::enclose_derivatives_each(each, x));
             let approx = ScaledPoly::value_and_slope_each(each, lo);
+            let slopes = ScaledPoly::enclose_slopes_each(each, x);
             for (k, p) in polys.iter().enumerate() {
                 prop_assert_eq!(bits(values[k]), bits(horner(p, x)));
                 prop_assert_eq!(bits(derivatives[k].0), bits(reference(p, 1, x)));
+                prop_assert_eq!(bits(slopes[k]), bits(derivatives[k].0));
                 prop_assert_eq!(bits(derivatives[k].1), bits(reference(p, 2, x)));
                 // The value and slope pass as it was, one polynomial alone.
                 let (mut value, mut slope) = (0.0, 0.0);
