@@ -223,6 +223,10 @@ impl Ord for Rat {
         if self.den == o.den {
             return self.num.cmp(&o.num);
         }
+        if let (Some((a, b)), Some((c, d))) = (self.words(), o.words()) {
+            // a/b against c/d, b, d > 0: a·d against c·b, each below 2^126.
+            return (i128::from(a) * i128::from(d)).cmp(&(i128::from(c) * i128::from(b)));
+        }
         if let (Some(a), Some(b)) = (self.dyadic_exponent(), o.dyadic_exponent()) {
             // x/2^a against y/2^b: signs first, then |x|·2^(−a) against
             // |y|·2^(−b) with no product and no shifted copy.
@@ -253,6 +257,9 @@ impl Rat {
         if self.den == o.den {
             return Rat::reduce(combine(&self.num, &o.num), self.den.clone());
         }
+        if let Some(short) = self.dyadic_sum_in_words(o, negate) {
+            return short;
+        }
         match (self.dyadic_exponent(), o.dyadic_exponent()) {
             (Some(a), Some(b)) if a < b => {
                 Rat::reduce(combine(&self.num.shl(b - a), &o.num), o.den.clone())
@@ -265,6 +272,42 @@ impl Rat {
                 &self.den * &o.den,
             ),
         }
+    }
+}
+
+impl Rat {
+    /// `(num, den)` as machine integers when both fit in 64 bits: the ends
+    /// of every root's narrowing and the points cut there, on every class
+    /// of docs/table4.md (counted, session 40).
+    #[inline]
+    fn words(&self) -> Option<(i64, u64)> {
+        let den = u64::try_from(self.den.to_i64()?).ok()?;
+        Some((self.num.to_i64()?, den))
+    }
+
+    /// `self ± o` ([`Rat::sum`]) in `i128` for two dyadic rationals of
+    /// 64-bit words, `a/2^p ± c/2^q`: both numerators over `2^max(p, q)`
+    /// (each below `2^126`, their sum below `2^127`), then the common power
+    /// of two struck out, the lowest terms [`Rat::reduce`] gives. `None`
+    /// for any other pair.
+    #[inline]
+    fn dyadic_sum_in_words(&self, o: &Rat, negate: bool) -> Option<Rat> {
+        let ((a, b), (c, d)) = (self.words()?, o.words()?);
+        if !(b.is_power_of_two() && d.is_power_of_two()) {
+            return None;
+        }
+        let (p, q) = (b.trailing_zeros(), d.trailing_zeros());
+        let m = p.max(q);
+        let (x, y) = (i128::from(a) << (m - p), i128::from(c) << (m - q));
+        let sum = if negate { x - y } else { x + y };
+        if sum == 0 {
+            return Some(Rat::zero());
+        }
+        let k = sum.trailing_zeros().min(m);
+        Some(Rat {
+            num: Int::from_i128(sum >> k),
+            den: Int::from_u64(1 << (m - k)),
+        })
     }
 }
 
@@ -483,6 +526,39 @@ mod tests {
                 prop_assert_eq!(p - q, reference(p, q, true));
                 prop_assert_eq!(p.cmp(q), order(p, q));
                 prop_assert_eq!(p.cmp(&-q), order(p, &-q));
+            }
+        }
+        /// The word paths are the general ones: sums of dyadics of 64-bit
+        /// words (numerators to `i64`'s ends, levels up to 62, shared
+        /// powers of two, sums that cancel) and the order of any rationals
+        /// of 64-bit words, against the sum over the product of the
+        /// denominators and the cross products in big integers.
+        #[test]
+        fn word_sums_and_orders_are_the_general_ones(
+            a in prop_oneof![any::<i64>(), -64i64..64, Just(i64::MIN), Just(i64::MAX)],
+            b in prop_oneof![any::<i64>(), -64i64..64, Just(i64::MIN), Just(i64::MAX)],
+            ka in 0u64..63, kb in 0u64..63, shift in 0u64..62,
+            da in 1i64..i64::MAX, db in prop_oneof![1i64..i64::MAX, 1i64..1000],
+        ) {
+            let x = Rat::dyadic(Int::from(a), ka);
+            let y = Rat::dyadic(Int::from(b), kb);
+            let shared = Rat::dyadic(Int::from(b).shl(shift.min(kb)), kb);
+            let general = |p: &Rat, q: &Rat, negate: bool| {
+                let cross = &q.num * &p.den;
+                let cross = if negate { -cross } else { cross };
+                Rat::new(&p.num * &q.den + cross, &p.den * &q.den).expect("nonzero")
+            };
+            for (p, q) in [(&x, &y), (&y, &x), (&x, &x), (&x, &shared), (&shared, &y)] {
+                for negate in [false, true] {
+                    let short = p.dyadic_sum_in_words(q, negate);
+                    prop_assert!(short.is_some());
+                    prop_assert_eq!(short, Some(general(p, q, negate)));
+                }
+            }
+            let order = |p: &Rat, q: &Rat| (&p.num * &q.den).cmp(&(&q.num * &p.den));
+            let (u, v) = (Rat::from_frac(a, da), Rat::from_frac(b, db));
+            for (p, q) in [(&u, &v), (&v, &u), (&u, &x), (&y, &v), (&u, &-&u), (&u, &u)] {
+                prop_assert_eq!(p.cmp(q), order(p, q));
             }
         }
         /// The direct construction in lowest terms is the reduced `m·2^e`
