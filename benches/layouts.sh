@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# Wall clock of two revisions, each linked in several code layouts: whether
+# a change is faster, not whether its binary drew a lucky layout.
+#
+#   bash benches/layouts.sh OLD NEW [SEEDS] [PASSES]
+#
+# OLD and NEW are git revisions (NEW may be `.`, the working tree). Each is
+# built once (`examples/speed`, release profile) through a linker wrapper
+# that keeps the objects, then relinked as built (seed 0) and with lld's
+# `--shuffle-sections` under SEEDS further seeds (default 3). The binaries
+# run alternated, pinned to one core, PASSES times (default 15) over the
+# five class scenes; the table is the minimum of the per-pass medians.
+#
+# Why: on this project's short queries, a different function order moves
+# the exact path's wall clock by 2–5 % with no code changed, which is the
+# size of the gains measured since session 37. A change is kept when it is
+# faster in the same layout, layout by layout (docs/table4.md, issue 17,
+# session 40).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+OLD=${1:?usage: layouts.sh OLD NEW [SEEDS] [PASSES]}
+NEW=${2:?usage: layouts.sh OLD NEW [SEEDS] [PASSES]}
+SEEDS=${3:-3}
+PASSES=${4:-15}
+WORK=$(mktemp -d /tmp/layouts.XXXXXX)
+ROOT=$PWD
+SCENES="benches/scenes/rigid-deg2.toml benches/scenes/affine-deg2.toml benches/scenes/affine-rational-deg2.toml tests/scenes/paper-example-5-1.toml tests/scenes/rigid-tumbling.toml"
+
+# The wrapper links as `cc` does and, for the `speed` example, keeps its
+# objects and the command line (output path as @OUT@) in $KEEP. (Its name
+# matters: rustc infers the linker's flavour from it, and `link…` or
+# `…ld` would be taken for another linker's.)
+cat > "$WORK/save-objects.sh" <<'EOF'
+#!/usr/bin/env bash
+out=""; prev=""
+for a in "$@"; do [ "$prev" = "-o" ] && out="$a"; prev="$a"; done
+case "$(basename "$out")" in
+speed-*)
+  args=(); prev=""
+  for a in "$@"; do
+    if [ "$prev" = "-o" ]; then args+=("@OUT@")
+    elif [[ "$a" == @* ]]; then cp "${a#@}" "$KEEP/response"; args+=("@$KEEP/response")
+    elif [[ "$a" == *.o || "$a" == *.rlib || "$a" == *.a ]] && [ -f "$a" ]; then
+      cp "$a" "$KEEP/"; args+=("$KEEP/$(basename "$a")")
+    else args+=("$a"); fi
+    prev="$a"
+  done
+  printf '%q ' cc "${args[@]}" > "$KEEP/link-command"
+  ;;
+esac
+exec cc "$@"
+EOF
+chmod +x "$WORK/save-objects.sh"
+
+build() { # build TAG REV
+  local tag=$1 rev=$2 src
+  if [ "$rev" = . ]; then src=$ROOT; else
+    src=$WORK/src-$tag
+    git worktree add -q --detach "$src" "$rev"
+  fi
+  mkdir -p "$WORK/keep-$tag"
+  (cd "$src" && KEEP="$WORK/keep-$tag" \
+    CARGO_TARGET_X86_64_UNKNOWN_LINUX_GNU_LINKER="$WORK/save-objects.sh" \
+    CARGO_TARGET_DIR="$WORK/target" cargo build -q --release --example speed >&2)
+  [ "$rev" = . ] || git worktree remove --force "$src"
+  local cmd seed
+  cmd=$(cat "$WORK/keep-$tag/link-command")
+  for seed in $(seq 0 "$SEEDS"); do
+    local extra=""
+    [ "$seed" = 0 ] || extra="-Wl,--shuffle-sections=.text*=$seed"
+    eval "${cmd//@OUT@/$WORK/$tag-$seed} $extra"
+  done
+}
+build old "$OLD"
+build new "$NEW"
+
+for _ in $(seq "$PASSES"); do
+  for seed in $(seq 0 "$SEEDS"); do
+    for tag in old new; do
+      # shellcheck disable=SC2086
+      taskset -c 1 "$WORK/$tag-$seed" --reps 101 $SCENES | tail -n +2 >> "$WORK/$tag-$seed.tsv"
+    done
+  done
+done
+
+python3 - "$WORK" "$SEEDS" <<'PY'
+import sys, collections
+work, seeds = sys.argv[1], int(sys.argv[2])
+def table(tag, seed):
+    d = collections.defaultdict(lambda: ([], []))
+    for line in open(f"{work}/{tag}-{seed}.tsv"):
+        f = line.split("\t")
+        d[f[0]][0].append(float(f[1]))
+        d[f[0]][1].append(float(f[3]))
+    return {s: (min(e), min(fl)) for s, (e, fl) in d.items()}
+names = None
+print("| layout | " + " | ".join(s.replace(".toml", "") for s in table("old", 0)) + " |")
+print("|---|" + "---|" * len(table("old", 0)))
+faster = collections.Counter()
+for seed in range(seeds + 1):
+    old, new = table("old", seed), table("new", seed)
+    for tag, t in (("old", old), ("new", new)):
+        cells = [f"{e:.1f} / {fl:.1f} = {e / fl:.2f}" for e, fl in t.values()]
+        print(f"| {tag}, seed {seed} | " + " | ".join(cells) + " |")
+    for s in old:
+        faster[s] += new[s][0] < old[s][0]
+print()
+print("exact µs / float µs = ratio (minima of the pass medians); new exact faster than old in the same layout:")
+for s, n in faster.items():
+    print(f"  {s}: {n} of {seeds + 1} layouts")
+PY
+rm -rf "$WORK"
