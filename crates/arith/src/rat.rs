@@ -286,10 +286,13 @@ impl Rat {
     }
 
     /// `self ± o` ([`Rat::sum`]) in `i128` for two dyadic rationals of
-    /// 64-bit words, `a/2^p ± c/2^q`: both numerators over `2^max(p, q)`
-    /// (each below `2^126`, their sum below `2^127`), then the common power
-    /// of two struck out, the lowest terms [`Rat::reduce`] gives. `None`
-    /// for any other pair.
+    /// 64-bit words, `a/2^p ± c/2^q` (`p, q ≤ 62`: a word denominator is at
+    /// most `2^63 − 1`): both numerators over `2^max(p, q)` (each at most
+    /// `2^125` in magnitude, their sum `2^126`), then in lowest terms as
+    /// [`Rat::reduce`] gives them. From `Rat::sum` the levels differ, so
+    /// the numerator over the larger one is odd and so is the sum: nothing
+    /// to strike out. Called with equal levels (the tests do), the common
+    /// power of two is struck out. `None` for any other pair.
     #[inline]
     fn dyadic_sum_in_words(&self, o: &Rat, negate: bool) -> Option<Rat> {
         let ((a, b), (c, d)) = (self.words()?, o.words()?);
@@ -557,6 +560,18 @@ mod tests {
             }
             let order = |p: &Rat, q: &Rat| (&p.num * &q.den).cmp(&(&q.num * &p.den));
             let (u, v) = (Rat::from_frac(a, da), Rat::from_frac(b, db));
+            // Through the operators: a non-dyadic denominator (no word
+            // sum), a level past a word (2^63: no words at all), and the
+            // word sum reached from `Rat::sum` with the operands in order.
+            let past = Rat::dyadic(Int::from(b | 1), 63);
+            for (p, q) in [(&u, &x), (&x, &u), (&x, &past), (&past, &y), (&x, &y), (&y, &x)] {
+                prop_assert_eq!(p + q, general(p, q, false));
+                prop_assert_eq!(p - q, general(p, q, true));
+            }
+            prop_assert_eq!(past.words(), None);
+            if !da.unsigned_abs().is_power_of_two() {
+                prop_assert_eq!(u.dyadic_sum_in_words(&x, false).is_some(), u.den.exact_log2().is_some());
+            }
             for (p, q) in [(&u, &v), (&v, &u), (&u, &x), (&y, &v), (&u, &-&u), (&u, &u)] {
                 prop_assert_eq!(p.cmp(q), order(p, q));
             }
