@@ -276,13 +276,14 @@ impl Rat {
 }
 
 impl Rat {
-    /// `(num, den)` as machine integers when both fit in 64 bits: the ends
-    /// of every root's narrowing and the points cut there, on every class
-    /// of docs/table4.md (counted, session 40).
+    /// `(num, den)` as machine integers when both fit in an `i64` (the
+    /// denominator, positive, as a `u64` below `2^63`): the ends of every
+    /// root's narrowing and the points cut there, on every class of
+    /// docs/table4.md (counted, session 40). The word paths of the order,
+    /// the sum, the product and the decimal midpoint start here.
     #[inline]
-    fn words(&self) -> Option<(i64, u64)> {
-        let den = u64::try_from(self.den.to_i64()?).ok()?;
-        Some((self.num.to_i64()?, den))
+    pub(crate) fn words(&self) -> Option<(i64, u64)> {
+        Some((self.num.to_i64()?, self.den.to_i64()?.unsigned_abs()))
     }
 
     /// `self ± o` ([`Rat::sum`]) in `i128` for two dyadic rationals of
@@ -345,20 +346,19 @@ impl Rat {
     /// it is the very `Rat` of the general route, with two word gcds and
     /// no big-integer product or gcd. `None` when a part is longer.
     fn mul_words(&self, o: &Rat) -> Option<Rat> {
-        let (a, b) = (self.num.to_i64()?, self.den.to_i64()?);
-        let (c, d) = (o.num.to_i64()?, o.den.to_i64()?);
+        let ((a, b), (c, d)) = (self.words()?, o.words()?);
         if a == 0 || c == 0 {
             return Some(Rat::zero());
         }
-        // Denominators are positive, so each gcd divides a positive i64.
-        // A denominator 1 (integers, the usual weights) shares nothing.
-        let gcd = |x: i64, y: i64| match y {
+        // Each gcd divides a denominator, a positive i64. A denominator 1
+        // (integers, the usual weights) shares nothing.
+        let gcd = |x: i64, y: u64| match y {
             1 => 1,
-            _ => crate::gcd_u128(x.unsigned_abs().into(), y as u128) as i64,
+            _ => crate::gcd_u128(x.unsigned_abs().into(), y.into()) as i64,
         };
         let (g1, g2) = (gcd(a, d), gcd(c, b));
         let num = i128::from(a / g1) * i128::from(c / g2);
-        let den = i128::from(b / g2) * i128::from(d / g1);
+        let den = i128::from(b / g2.unsigned_abs()) * i128::from(d / g1.unsigned_abs());
         Some(Rat {
             num: Int::from_i128(num),
             den: Int::from_i128(den),

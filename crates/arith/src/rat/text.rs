@@ -64,8 +64,7 @@ impl Rat {
     /// rounding depends only on the value, not on its lowest terms).
     pub fn midpoint_decimal(lo: &Rat, hi: &Rat, digits: u32) -> String {
         let small = || {
-            let (a, b) = (lo.num.to_i64()?, u64::try_from(lo.den.to_i64()?).ok()?);
-            let (c, d) = (hi.num.to_i64()?, u64::try_from(hi.den.to_i64()?).ok()?);
+            let ((a, b), (c, d)) = (lo.words()?, hi.words()?);
             // (a/b + c/d)/2 = n/(2l) over l = lcm(b, d).
             let l = (b / gcd(b, d)).checked_mul(d)?;
             let n = i128::from(a)
