@@ -2,59 +2,52 @@
 //! and mode, with the path each query took: the quick, one-run table
 //! behind docs/table4.md's per-class rows (criterion gives the benches).
 //!
-//! `cargo run --release --example speed -- [--reps N] SCENE.toml…`
+//! `cargo run --release --example speed -- [--reps N] [--no-geometry] SCENE.toml…`
 //!
 //! Prints one tab-separated line per scene: name, exact total, exact first
 //! contact, float total (µs, medians), exact/float ratio, deg f, deg sr0,
 //! whether `sr0` was formed, then `--raycast` total and first contact (µs)
 //! and the path that answered it (`raycast`, or `exact` where it handed the
-//! query to Algorithm 1).
+//! query to Algorithm 1). `--no-geometry` times every mode without the
+//! contact points and normals (`Options::contact_geometry` off), which
+//! separates their cost from the instants'.
 
-use ccd_exact::{run, Arithmetic, Options, Scene};
+use ccd_exact::{run, Arithmetic, Options};
 use std::time::Instant;
 
+mod timing;
+
 fn median_us(reps: usize, mut f: impl FnMut()) -> f64 {
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
+    timing::median(
+        (0..reps)
+            .map(|_| {
+                let s = Instant::now();
+                f();
+                s.elapsed().as_secs_f64() * 1e6
+            })
+            .collect(),
+    )
 }
 
 fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
-    let mut reps = 31;
-    if let Some(i) = args.iter().position(|a| a == "--reps") {
-        reps = args
-            .get(i + 1)
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(reps)
-            .max(1);
-        args.drain(i..(i + 2).min(args.len()));
-    }
+    let reps = timing::take_count(&mut args, "--reps", 31);
+    let base = Options {
+        contact_geometry: !timing::take_switch(&mut args, "--no-geometry"),
+        ..Options::default()
+    };
     println!(
         "scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed\traycast_us\traycast_first_us\traycast_path"
     );
-    for path in args {
-        let Ok(text) = std::fs::read_to_string(&path) else {
-            eprintln!("{path}: unreadable");
-            continue;
-        };
-        let Ok(scene) = Scene::from_toml(&text) else {
-            continue; // a world file or a bad scene
-        };
-        let exact = Options::default();
+    for (path, scene) in timing::scenes(args) {
+        let exact = base.clone();
         let first = Options {
             first_contact_only: true,
-            ..Options::default()
+            ..base.clone()
         };
         let float = Options {
             arithmetic: Arithmetic::Float,
-            ..Options::default()
+            ..base.clone()
         };
         let Ok(out) = run(&scene, &exact) else {
             eprintln!("{path}: error");
