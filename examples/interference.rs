@@ -9,9 +9,9 @@
 //! Prints one tab-separated line per scene: name, exact alone, float
 //! alone, their sum, the alternated pair (µs) and the pair's excess over
 //! the sum (%). Both modes run the same code for the quadric matrices and
-//! `f(λ; t)`; an excess is time that one query's code and data cost the
-//! other's (caches, branch predictors), not work (docs/table4.md, issue 17,
-//! session 41). `--no-geometry` leaves out the contact points and normals
+//! `f(λ; t)`; an excess is time the two queries cost each other when run
+//! in turn, not work (through the caches or the branch predictors, we
+//! presume: docs/table4.md, issue 17, session 41, could not see which). `--no-geometry` leaves out the contact points and normals
 //! in both modes, as in `speed`.
 
 use ccd_exact::{run, Arithmetic, Options};

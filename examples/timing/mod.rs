@@ -2,17 +2,16 @@
 //! command-line flags and medians.
 
 /// Removes `--flag N` from `args` and returns `N` (at least 1); `default`
-/// when the flag is absent or `N` is not a count.
+/// when the flag is absent or `N` is not a count. A flag right after it
+/// (`--reps --no-geometry`) is left in place.
 pub fn take_count(args: &mut Vec<String>, flag: &str, default: usize) -> usize {
     let Some(i) = args.iter().position(|a| a == flag) else {
         return default;
     };
-    let n = args
-        .get(i + 1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(default)
-        .max(1);
-    args.drain(i..(i + 2).min(args.len()));
+    let next = args.get(i + 1).filter(|s| !s.starts_with("--"));
+    let n = next.and_then(|s| s.parse().ok()).unwrap_or(default).max(1);
+    let end = if next.is_some() { i + 2 } else { i + 1 };
+    args.drain(i..end);
     n
 }
 
