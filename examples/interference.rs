@@ -11,8 +11,9 @@
 //! the sum (%). Both modes run the same code for the quadric matrices and
 //! `f(λ; t)`; an excess is time the two queries cost each other when run
 //! in turn, not work (through the caches or the branch predictors, we
-//! presume: docs/table4.md, issue 17, session 41, could not see which). `--no-geometry` leaves out the contact points and normals
-//! in both modes, as in `speed`.
+//! presume; docs/table4.md, issue 17, session 41, could not see which).
+//! `--no-geometry` leaves out the contact points and normals in both
+//! modes, as in `speed`.
 
 use ccd_exact::{run, Arithmetic, Options};
 use std::time::Instant;

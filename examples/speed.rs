@@ -32,23 +32,30 @@ fn median_us(reps: usize, mut f: impl FnMut()) -> f64 {
 fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let reps = timing::take_count(&mut args, "--reps", 31);
-    let base = Options {
+    let exact = Options {
         contact_geometry: !timing::take_switch(&mut args, "--no-geometry"),
         ..Options::default()
+    };
+    let first = Options {
+        first_contact_only: true,
+        ..exact.clone()
+    };
+    let float = Options {
+        arithmetic: Arithmetic::Float,
+        ..exact.clone()
+    };
+    let ray = Options {
+        raycast: true,
+        ..exact.clone()
+    };
+    let ray_first = Options {
+        raycast: true,
+        ..first.clone()
     };
     println!(
         "scene\texact_us\tfirst_us\tfloat_us\tratio\tdeg_f\tdeg_sr0\tsr0_formed\traycast_us\traycast_first_us\traycast_path"
     );
     for (path, scene) in timing::scenes(args) {
-        let exact = base.clone();
-        let first = Options {
-            first_contact_only: true,
-            ..base.clone()
-        };
-        let float = Options {
-            arithmetic: Arithmetic::Float,
-            ..base.clone()
-        };
         let Ok(out) = run(&scene, &exact) else {
             eprintln!("{path}: error");
             continue;
@@ -59,14 +66,6 @@ fn main() {
             median_us(reps, || drop(run(&scene, &float)))
         } else {
             f64::NAN
-        };
-        let ray = Options {
-            raycast: true,
-            ..exact.clone()
-        };
-        let ray_first = Options {
-            raycast: true,
-            ..first.clone()
         };
         let r = median_us(reps, || drop(run(&scene, &ray)));
         let rf = median_us(reps, || drop(run(&scene, &ray_first)));

@@ -350,15 +350,15 @@ impl Rat {
         if a == 0 || c == 0 {
             return Some(Rat::zero());
         }
-        // Each gcd divides a denominator, a positive i64. A denominator 1
-        // (integers, the usual weights) shares nothing.
+        // Each gcd divides a denominator, below 2^63, so it is also an
+        // i64. A denominator 1 (integers, the usual weights) shares nothing.
         let gcd = |x: i64, y: u64| match y {
             1 => 1,
-            _ => crate::gcd_u128(x.unsigned_abs().into(), y.into()) as i64,
+            _ => crate::gcd_u128(x.unsigned_abs().into(), y.into()) as u64,
         };
         let (g1, g2) = (gcd(a, d), gcd(c, b));
-        let num = i128::from(a / g1) * i128::from(c / g2);
-        let den = i128::from(b / g2.unsigned_abs()) * i128::from(d / g1.unsigned_abs());
+        let num = i128::from(a / g1 as i64) * i128::from(c / g2 as i64);
+        let den = i128::from(b / g2) * i128::from(d / g1);
         Some(Rat {
             num: Int::from_i128(num),
             den: Int::from_i128(den),
