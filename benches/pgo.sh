@@ -3,7 +3,7 @@
 # on every shipped scene: for packagers who ship a binary (a distribution
 # package, a container). Same code, same answers (CI compares every run of
 # `benches/outputs.sh` byte for byte); on the five timing classes the
-# exact query ran 4–11 % faster, the float one 1–7 % (docs/table4.md,
+# exact query ran 4–13 % faster, the float one 1–8 % (docs/table4.md,
 # issue 17, session 42). A plain `cargo build --release` stays as it is.
 #
 #   bash benches/pgo.sh             # target/pgo/ccd-exact, target/pgo/speed
