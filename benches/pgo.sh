@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # A profile-guided build (PGO) of the CLI and of `examples/speed`, trained
 # on every shipped scene: for packagers who ship a binary (a distribution
-# package, a container). Same code, same answers (CI compares every run of
-# `benches/outputs.sh` byte for byte); on the five timing classes the
-# exact query ran 4–13 % faster, the float one 1–8 % (docs/table4.md,
-# issue 17, session 42). A plain `cargo build --release` stays as it is.
+# package, a container). Same code, same answers (CI compares the 638
+# runs of `ALL_MODES=1 benches/outputs.sh` byte for byte: five modes,
+# worlds, the batch); on the five timing classes the exact query ran
+# 4–12 % faster, the float one 1–8 % (docs/table4.md, issue 17, session
+# 42). A plain `cargo build --release` stays as it is.
 #
 #   bash benches/pgo.sh             # target/pgo/ccd-exact, target/pgo/speed
 #   bash benches/pgo.sh --compare   # and the five classes, plain vs PGO
@@ -14,12 +15,17 @@
 # weigh the hot paths), `llvm-profdata merge`, and the build that uses the
 # profile (`-Cprofile-use`). The profile is made afresh each time: never
 # stale. `--target` keeps the flags off build scripts and proc macros.
-# Needs the toolchain's `llvm-profdata` (rustup's `llvm-tools`, added here
-# when missing).
+# Needs an `llvm-profdata` of the toolchain's LLVM version: rustup's
+# `llvm-tools` (added here when missing), or the one `LLVM_PROFDATA` names
+# (a toolchain without rustup).
 set -euo pipefail
+case "${1:-}" in
+"" | --compare) ;;
+*) echo "usage: bash benches/pgo.sh [--compare]" >&2; exit 2 ;;
+esac
 cd "$(dirname "$0")/.."
 HOST=$(rustc -vV | sed -n 's/^host: //p')
-PROFDATA="$(rustc --print sysroot)/lib/rustlib/$HOST/bin/llvm-profdata"
+PROFDATA=${LLVM_PROFDATA:-"$(rustc --print sysroot)/lib/rustlib/$HOST/bin/llvm-profdata"}
 [ -x "$PROFDATA" ] || rustup component add llvm-tools >&2
 OUT=$PWD/target/pgo
 rm -rf "$OUT/data"
@@ -41,8 +47,8 @@ echo "== training" >&2
 # mode, with and without the contact geometry; it skips the world files),
 # the long numbers included. Without them (issue 18's scenes, rigid-288)
 # the long-number code is profiled cold, optimised for size, and degree-2
-# and degree-4 affine and tumbling ran 25–30 % *slower* than the plain
-# build, the float mode too: a profile must cover the whole workload.
+# and degree-4 affine ran 19–29 % *slower* than the plain build, tumbling
+# 11 %, the float mode too: a profile must cover the whole workload.
 all=(tests/scenes/*.toml tests/stability/*.toml benches/scenes/*.toml benches/scenes/lines/*.toml)
 for s in "${all[@]}"; do
   case "$s" in *issue-18-*|*rigid-288*) continue ;; esac
@@ -52,8 +58,8 @@ for s in "${all[@]}"; do
   done
 done
 "$GEN/ccd-exact" batch < tests/scenes/pairs.jsonl > /dev/null 2>&1 || true
-"$GEN/examples/speed" --reps 3 "${all[@]}" > /dev/null 2>&1
-"$GEN/examples/speed" --reps 3 --no-geometry "${all[@]}" > /dev/null 2>&1
+"$GEN/examples/speed" --reps 3 "${all[@]}" > /dev/null
+"$GEN/examples/speed" --reps 3 --no-geometry "${all[@]}" > /dev/null
 "$PROFDATA" merge -o "$OUT/ccd.profdata" "$OUT/data"
 
 echo "== optimised build" >&2
@@ -67,8 +73,9 @@ echo "built $OUT/ccd-exact and $OUT/speed" >&2
 # by scene, pinned to one core where `taskset` is, 60 passes of 21-query
 # medians; the minimum over the passes (this host has slow spells lasting
 # seconds, which short alternations ride out).
-cargo build -q --release --example speed
-PLAIN=target/release/examples/speed
+# The plain side built as the PGO one (same flags, same target).
+build "" plain
+PLAIN=$OUT/plain/$HOST/release/examples/speed
 PIN=()
 if command -v taskset > /dev/null; then PIN=(taskset -c "$(($(nproc) - 1))"); fi
 CLASSES="benches/scenes/rigid-deg2.toml benches/scenes/affine-deg2.toml benches/scenes/affine-rational-deg2.toml tests/scenes/paper-example-5-1.toml tests/scenes/rigid-tumbling.toml"
