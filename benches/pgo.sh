@@ -4,7 +4,7 @@
 # package, a container). Same code, same answers (CI compares the 638
 # runs of `ALL_MODES=1 benches/outputs.sh` byte for byte: five modes,
 # worlds, the batch); on the five timing classes the exact query ran
-# 4–12 % faster, the float one 1–8 % (docs/table4.md, issue 17, session
+# 3–12 % faster, the float one 1–9 % (docs/table4.md, issue 17, session
 # 42). A plain `cargo build --release` stays as it is.
 #
 #   bash benches/pgo.sh             # target/pgo/ccd-exact, target/pgo/speed
