@@ -11,7 +11,7 @@
 #   bash benches/pgo.sh --compare   # and the five classes, plain vs PGO
 #
 # Steps: an instrumented build (`-Cprofile-generate`), the training (the
-# CLI once per scene and mode, then `speed`'s repeated queries, which
+# CLI over benches/outputs.sh's runs, then `speed`'s repeated queries, which
 # weigh the hot paths), `llvm-profdata merge`, and the build that uses the
 # profile (`-Cprofile-use`). The profile is made afresh each time: never
 # stale. `--target` keeps the flags off build scripts and proc macros.
@@ -41,23 +41,17 @@ build "-Cprofile-generate=$OUT/data" gen
 GEN=$OUT/gen/$HOST/release
 
 echo "== training" >&2
-# Every shipped pair scene: the CLI's own code (TOML, JSON, worlds, batch)
-# once per scene and mode, as benches/outputs.sh (without the slow hostile
-# ones), then the library's paths weighed by repetition in `speed` (every
-# mode, with and without the contact geometry; it skips the world files),
-# the long numbers included. Without them (issue 18's scenes, rigid-288)
-# the long-number code is profiled cold, optimised for size, and degree-2
-# and degree-4 affine ran 19–29 % *slower* than the plain build, tumbling
-# 11 %, the float mode too: a profile must cover the whole workload.
+# The CLI's own code (TOML, JSON, worlds, batch): every run of
+# `ALL_MODES=1 benches/outputs.sh` (five modes; without the slow hostile
+# scenes). Then the library's paths weighed by repetition in `speed`
+# (every mode, with and without the contact geometry; it skips the world
+# files), the long numbers included. Without them (issue 18's scenes,
+# rigid-288) the long-number code is profiled cold, optimised for size,
+# and degree-2 and degree-4 affine ran 19–29 % *slower* than the plain
+# build, tumbling 11 %, the float mode too: a profile must cover the
+# whole workload.
+BIN=$GEN/ccd-exact BIN_BUILT=1 ALL_MODES=1 bash benches/outputs.sh > /dev/null
 all=(tests/scenes/*.toml tests/stability/*.toml benches/scenes/*.toml benches/scenes/lines/*.toml)
-for s in "${all[@]}"; do
-  case "$s" in *issue-18-*|*rigid-288*) continue ;; esac
-  for mode in "" "--first-contact" "--arithmetic float" "--raycast" "--no-geometry"; do
-    # shellcheck disable=SC2086
-    "$GEN/ccd-exact" "$s" --json $mode > /dev/null 2>&1 || true
-  done
-done
-"$GEN/ccd-exact" batch < tests/scenes/pairs.jsonl > /dev/null 2>&1 || true
 "$GEN/examples/speed" --reps 3 "${all[@]}" > /dev/null
 "$GEN/examples/speed" --reps 3 --no-geometry "${all[@]}" > /dev/null
 "$PROFDATA" merge -o "$OUT/ccd.profdata" "$OUT/data"
