@@ -32,7 +32,7 @@ cleanup() {
   rm -rf "$WORK"
 }
 trap cleanup EXIT
-SCENES="benches/scenes/rigid-deg2.toml benches/scenes/affine-deg2.toml benches/scenes/affine-rational-deg2.toml tests/scenes/paper-example-5-1.toml tests/scenes/rigid-tumbling.toml"
+source benches/classes.sh
 
 # The wrapper links as `cc` does and, for the `speed` example, keeps its
 # objects and the command line (output path as @OUT@) in $KEEP. Its name
@@ -90,34 +90,24 @@ build new "$NEW"
 for _ in $(seq "$PASSES"); do
   for seed in $(seq 0 "$SEEDS"); do
     for tag in old new; do
-      # shellcheck disable=SC2086
-      taskset -c 1 "$WORK/$tag-$seed" --reps 101 $SCENES | tail -n +2 >> "$WORK/$tag-$seed.tsv"
+      taskset -c 1 "$WORK/$tag-$seed" --reps 101 "${CLASSES[@]}" | tail -n +2 |
+        sed "s/^/$tag, seed $seed\t/" >> "$WORK/passes.tsv"
     done
   done
 done
 
-python3 - "$WORK" "$SEEDS" <<'PY'
-import sys, collections
-work, seeds = sys.argv[1], int(sys.argv[2])
-def table(tag, seed):
-    d = collections.defaultdict(lambda: ([], []))
-    for line in open(f"{work}/{tag}-{seed}.tsv"):
-        f = line.split("\t")
-        d[f[0]][0].append(float(f[1]))
-        d[f[0]][1].append(float(f[3]))
-    return {s: (min(e), min(fl)) for s, (e, fl) in d.items()}
-print("| layout | " + " | ".join(s.replace(".toml", "") for s in table("old", 0)) + " |")
-print("|---|" + "---|" * len(table("old", 0)))
+python3 - "$WORK/passes.tsv" "$SEEDS" <<'PY'
+import collections, sys
+sys.path.insert(0, "benches")
+from minima import minima, print_table
+table, seeds = minima(sys.argv[1]), int(sys.argv[2])
+print_table(table, "layout")
 faster = collections.Counter()
 for seed in range(seeds + 1):
-    old, new = table("old", seed), table("new", seed)
-    for tag, t in (("old", old), ("new", new)):
-        cells = [f"{e:.1f} / {fl:.1f} = {e / fl:.2f}" for e, fl in t.values()]
-        print(f"| {tag}, seed {seed} | " + " | ".join(cells) + " |")
+    old, new = table[f"old, seed {seed}"], table[f"new, seed {seed}"]
     for s in old:
         faster[s] += new[s][0] < old[s][0]
-print()
-print("exact µs / float µs = ratio (minima of the pass medians); new exact faster than old in the same layout:")
+print("new exact faster than old in the same layout:")
 for s, n in faster.items():
     print(f"  {s}: {n} of {seeds + 1} layouts")
 PY

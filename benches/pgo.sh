@@ -72,29 +72,11 @@ build "" plain
 PLAIN=$OUT/plain/$HOST/release/examples/speed
 PIN=()
 if command -v taskset > /dev/null; then PIN=(taskset -c "$(($(nproc) - 1))"); fi
-CLASSES="benches/scenes/rigid-deg2.toml benches/scenes/affine-deg2.toml benches/scenes/affine-rational-deg2.toml tests/scenes/paper-example-5-1.toml tests/scenes/rigid-tumbling.toml"
+source benches/classes.sh
 for _ in $(seq 60); do
-  for s in $CLASSES; do
+  for s in "${CLASSES[@]}"; do
     "${PIN[@]}" "$PLAIN" --reps 21 "$s" | tail -n +2 | sed 's/^/plain\t/'
     "${PIN[@]}" "$OUT/speed" --reps 21 "$s" | tail -n +2 | sed 's/^/pgo\t/'
   done
 done > "$OUT/compare.tsv"
-python3 - "$OUT/compare.tsv" <<'PY'
-import sys, collections
-runs = collections.defaultdict(lambda: ([], []))
-for line in open(sys.argv[1]):
-    f = line.split("\t")
-    runs[f[0], f[1]][0].append(float(f[2]))
-    runs[f[0], f[1]][1].append(float(f[4]))
-scenes = list(dict.fromkeys(s for _, s in runs))
-print("| build | " + " | ".join(s.replace(".toml", "") for s in scenes) + " |")
-print("|---|" + "---|" * len(scenes))
-for build in ("plain", "pgo"):
-    cells = []
-    for s in scenes:
-        e, fl = (min(v) for v in runs[build, s])
-        cells.append(f"{e:.1f} / {fl:.1f} = {e / fl:.2f}")
-    print(f"| {build} | " + " | ".join(cells) + " |")
-print()
-print("exact µs / float µs = ratio (minima over the passes of 21-query medians)")
-PY
+python3 benches/minima.py "$OUT/compare.tsv"
