@@ -160,20 +160,20 @@ impl Coefficients {
 
     /// Whether the closed form `q` is the zero polynomial, decided exactly
     /// and once: for `sr0` first by a repeated factor of `f` in `λ` common
-    /// to every `t` ([`CharPoly::fixed_repeated_factor`], a few gcds of
-    /// quartics), else by forming `q` (at once when that is cheap: short
-    /// numbers, or `f` constant in `t`).
+    /// to every `t` ([`CharPoly::fixed_repeated_factor`], in the usual case
+    /// one gcd of quartics modulo a prime and a few evaluations, cheaper
+    /// than forming `sr0` even in `i128`; the factor found is also `sr11`'s
+    /// hint, [`Coefficients::triple_root_instants`]), else by forming `q`
+    /// (at once when `f` is constant in `t`: then `q` is one closed form of
+    /// integers).
     pub(crate) fn vanishes_identically(&self, q: Quantity) -> bool {
         *self.zero[slot(q)].get_or_init(|| {
-            // Short numbers form q in i128 for less than the test, and a
-            // constant f's q is one closed form of integers.
-            let cheap = self.short(q) || self.f.degree() == 0;
             let fixed = || {
                 self.fixed
                     .get_or_init(|| self.f.fixed_repeated_factor())
                     .is_some()
             };
-            (q == Quantity::Sr0 && !cheap && fixed()) || self.polynomial(q).is_zero()
+            (q == Quantity::Sr0 && self.f.degree() != 0 && fixed()) || self.polynomial(q).is_zero()
         })
     }
 
@@ -1222,8 +1222,9 @@ mod tests {
         /// with `e = 2` (a repeated factor common to every `t`, so
         /// `sr0 ≡ 0`: the claim the shortcut rests on, checked on the
         /// formed `sr0`), `e = 1` (only a common simple factor) or, with
-        /// `plain`, without `h` (`F_j = (λ² + (j + 1)λ + 1)·g_j`); numbers scaled past the `i128` route's
-        /// 16 bits (shifts of 17 bits or more), so that the test itself runs. Where one `g_j` has no
+        /// `plain`, without `h` (`F_j = (λ² + (j + 1)λ + 1)·g_j`); numbers
+        /// short (the `i128` route's, up to 16 bits) or scaled past them
+        /// (shifts up to 120 bits). Where one `g_j` has no
         /// repeated factor (and none shared with `h`), the test must find
         /// `h` (it is complete there); and `g_0 = k²` (a repeated factor of
         /// `F_0` alone, bodies touching at `t = 0`) must not hide it.
@@ -1231,7 +1232,8 @@ mod tests {
         fn sr0_vanishing_without_forming_it_is_the_formed_answer(
             h in proptest::collection::vec(-9i64..10, 2),
             g in proptest::collection::vec(proptest::collection::vec(-9i64..10, 3), 1..4),
-            e in 1u32..3, plain in any::<bool>(), touch in any::<bool>(), shift in 17u64..120,
+            e in 1u32..3, plain in any::<bool>(), touch in any::<bool>(),
+            shift in prop_oneof![0u64..17, 17u64..120],
         ) {
             let h = poly(&h);
             prop_assume!(h.degree() == Some(1));

@@ -190,11 +190,16 @@ impl CharPoly {
     }
 
     /// A repeated factor in `λ` of `f(λ; t)` at every `t` (`h` with `h²`
-    /// dividing `f`), with `f = Σ_j t^j·F_j(λ)`. Modulo a word prime the
-    /// parts' gcd must keep a repeated factor; when that factor's image is
-    /// linear with a short root (numerator and denominator up to `2^26`:
-    /// [`Residues::linear_candidate`]), `h` is that root's `d·λ − n`;
-    /// otherwise `h` is the product of the distinct
+    /// dividing `f`), with `f = Σ_j t^j·F_j(λ)`. Modulo a word prime every
+    /// part's image keeps `h̄²`. First, for one gcd: when the repeated part
+    /// `gcd(F̄, F̄′)` of the last nonzero image `F̄` is linear with a short
+    /// root `n/d` (numerator and denominator up to `2^26`:
+    /// [`Residues::linear_candidate`]), `h = d·λ − n` when every part has
+    /// the root `n/d` twice, `F_j(n/d) = F_j′(n/d) = 0` (exact homogeneous
+    /// evaluations: for a linear `h` that is `h² | F_j`). Otherwise the
+    /// parts' gcd modulo the prime must keep a repeated factor; when that
+    /// factor's image is linear with a short root, `h` is that root's
+    /// `d·λ − n`; otherwise `h` is the product of the distinct
     /// repeated factors of one `F_b` (the squarefree part of
     /// `gcd(F_b, F_b′)`; `b` the part with the fewest of them modulo a word
     /// prime, where the images' common gcd must have a repeated factor
@@ -207,8 +212,8 @@ impl CharPoly {
     /// a²·Disc₃(a, b, c, d)` and the cubic keeps `h²` (or `a = 0`). That is the usual reason for it: spheres (a double root
     /// `λ = −1`), homothetic pairs, two translates of one body. A
     /// sufficient test only (`None` does not mean `sr0 ≢ 0`), costing a
-    /// gcd of quartics and a few divisions instead of the degree-`6n`
-    /// closed form.
+    /// gcd of quartics modulo a prime and a few evaluations (the usual
+    /// case) or divisions instead of the degree-`6n` closed form.
     ///
     /// ```
     /// use ccd_motion::CharPoly;
@@ -233,11 +238,35 @@ impl CharPoly {
             )
         };
         let parts: Vec<ZPoly> = (0..=self.degree()).map(part).collect();
-        // Modulo the word prime first (a filter whose "no" may be wrong, when
-        // the prime divides lc(h)): h̄² divides every image, so their gcd
-        // keeps degree 2 or more, and has a repeated factor.
         // The repeated part gcd(r, r′) of an image.
         let repeated = |r: &Residues| r.gcd(&r.derivative());
+        // The usual case first, for one gcd of quartics modulo the word
+        // prime instead of one per part: the last nonzero part's image (not
+        // F_0's, which has a repeated factor of its own where the bodies
+        // touch at t = 0). Its repeated part keeps h̄ (degree 0: no h, a
+        // filter's "no" as below); when that is linear, its short root is
+        // the candidate, proven by exact evaluations: for h = d·λ − n,
+        // h² | F_j ⇔ F_j(n/d) = F_j′(n/d) = 0.
+        let last = parts.iter().rev().map(Residues::of).find(|r| !r.is_zero());
+        let last = repeated(&last?);
+        if last.degree().is_none_or(|d| d == 0) {
+            return None;
+        }
+        if let Some(h) = last.linear_candidate() {
+            let root = Rat::new(-h.coeff(0), h.coeff(1)).expect("a linear h");
+            let twice = |p: &ZPoly| {
+                p.is_zero() || {
+                    let (v, d) = p.eval_homogeneous_with_derivative(&root);
+                    v.is_zero() && d.is_zero()
+                }
+            };
+            if parts.iter().all(twice) {
+                return Some(h);
+            }
+        }
+        // Modulo the word prime (a filter whose "no" may be wrong, when the
+        // prime divides lc(h)): h̄² divides every image, so their gcd keeps
+        // degree 2 or more, and has a repeated factor.
         let mut images = Vec::with_capacity(parts.len());
         let mut common = Residues::of(&ZPoly::zero());
         for p in &parts {

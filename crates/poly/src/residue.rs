@@ -255,6 +255,28 @@ mod tests {
     }
 
     proptest! {
+        /// Any root `r` modulo `p`: a candidate `d·t − n` is primitive,
+        /// within the bound, and has that root (`n ≡ r·d`); a short root
+        /// always comes back as itself.
+        #[test]
+        fn linear_candidates_over_the_whole_range(
+            r in 0..Residues::modulus(), n in -(1i64 << 26)..=(1 << 26), d in 1i64..=(1 << 26),
+        ) {
+            let f = &*FIELD;
+            let image = Residues::trimmed(vec![f.neg(f.enter(r)), f.one]);
+            if let Some(h) = image.linear_candidate() {
+                let (n, d) = (-h.coeff(0), h.coeff(1));
+                prop_assert!(d.is_positive() && d.bits() <= 27 && n.bits() <= 27);
+                prop_assert_eq!(h.primitive_part(), h.clone());
+                let m = Int::from(Residues::modulus());
+                prop_assert!((&n - &(&d * &Int::from(r))).div_rem_trunc(&m).1.is_zero());
+            }
+            let root = ZPoly::from_i64s(&[-n, d]).primitive_part();
+            prop_assert_eq!(Residues::of(&root).linear_candidate(), Some(root));
+        }
+    }
+
+    proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
         /// The image of the derivative is the derivative of the image, and
         /// a squarefree proof only for a squarefree polynomial (a square
