@@ -161,8 +161,9 @@ impl Coefficients {
     /// Whether the closed form `q` is the zero polynomial, decided exactly
     /// and once: for `sr0` first by a repeated factor of `f` in `λ` common
     /// to every `t` ([`CharPoly::fixed_repeated_factor`], in the usual case
-    /// one gcd of quartics modulo a prime and a few evaluations, cheaper
-    /// than forming `sr0` even in `i128`; the factor found is also `sr11`'s
+    /// one gcd of quartics modulo a prime and a few evaluations, which,
+    /// when they find it, cost less than forming `sr0` even in `i128`
+    /// (when not, they are spent besides); the factor found is also `sr11`'s
     /// hint, [`Coefficients::triple_root_instants`]), else by forming `q`
     /// (at once when `f` is constant in `t`: then `q` is one closed form of
     /// integers).
@@ -1222,9 +1223,9 @@ mod tests {
         /// with `e = 2` (a repeated factor common to every `t`, so
         /// `sr0 ≡ 0`: the claim the shortcut rests on, checked on the
         /// formed `sr0`), `e = 1` (only a common simple factor) or, with
-        /// `plain`, without `h` (`F_j = (λ² + (j + 1)λ + 1)·g_j`); numbers
-        /// short (the `i128` route's, up to 16 bits) or scaled past them
-        /// (shifts up to 120 bits). Where one `g_j` has no
+        /// `plain`, without `h` (`F_j = (λ² + (j + 1)λ + 1)·g_j`); shifts of
+        /// 0..16 bits (short numbers, within the `i128` route's 16 bits, at
+        /// the low end) or of 17..119 (past them). Where one `g_j` has no
         /// repeated factor (and none shared with `h`), the test must find
         /// `h` (it is complete there); and `g_0 = k²` (a repeated factor of
         /// `F_0` alone, bodies touching at `t = 0`) must not hide it.

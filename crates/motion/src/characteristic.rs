@@ -241,12 +241,14 @@ impl CharPoly {
         // The repeated part gcd(r, r′) of an image.
         let repeated = |r: &Residues| r.gcd(&r.derivative());
         // The usual case first, for one gcd of quartics modulo the word
-        // prime instead of one per part: the last nonzero part's image (not
-        // F_0's, which has a repeated factor of its own where the bodies
-        // touch at t = 0). Its repeated part keeps h̄ (degree 0: no h, a
-        // filter's "no" as below); when that is linear, its short root is
-        // the candidate, proven by exact evaluations: for h = d·λ − n,
-        // h² | F_j ⇔ F_j(n/d) = F_j′(n/d) = 0.
+        // prime instead of one per part: the last nonzero image (of the
+        // top part, usually; F_0's has a repeated factor of its own where
+        // the bodies touch at t = 0). Its repeated part keeps h̄ (degree
+        // 0: no h, a filter's "no" as below); when that is linear, its
+        // short root is the candidate, proven by exact evaluations: for
+        // h = d·λ − n, h² | F_j ⇔ F_j(n/d) = F_j′(n/d) = 0. (A candidate
+        // that fails is tried again below, by division: rare, and cheap
+        // beside the gcds there.)
         let last = parts.iter().rev().map(Residues::of).find(|r| !r.is_zero());
         let last = repeated(&last?);
         if last.degree().is_none_or(|d| d == 0) {
@@ -256,8 +258,8 @@ impl CharPoly {
             let root = Rat::new(-h.coeff(0), h.coeff(1)).expect("a linear h");
             let twice = |p: &ZPoly| {
                 p.is_zero() || {
-                    let (v, d) = p.eval_homogeneous_with_derivative(&root);
-                    v.is_zero() && d.is_zero()
+                    let (value, slope) = p.eval_homogeneous_with_derivative(&root);
+                    value.is_zero() && slope.is_zero()
                 }
             };
             if parts.iter().all(twice) {

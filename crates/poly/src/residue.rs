@@ -255,24 +255,38 @@ mod tests {
     }
 
     proptest! {
-        /// Any root `r` modulo `p`: a candidate `d·t − n` is primitive,
-        /// within the bound, and has that root (`n ≡ r·d`); a short root
-        /// always comes back as itself.
+        /// Roots modulo `p` of every kind: a short root `n/d` itself (it
+        /// comes back, primitive), one just beside it (`n/d + k`, `k ≠ 0`
+        /// small: a residue that is not short, as a uniform one): a
+        /// candidate `d·t − n`, whenever given, has `0 < d ≤ 2^26`,
+        /// `|n| ≤ 2^26`, is primitive and has that root (`n ≡ r·d`).
         #[test]
-        fn linear_candidates_over_the_whole_range(
-            r in 0..Residues::modulus(), n in -(1i64 << 26)..=(1 << 26), d in 1i64..=(1 << 26),
+        fn linear_candidates_are_short_roots_of_the_residue(
+            n in -(1i64 << 26)..=(1 << 26), d in 1i64..=(1 << 26), k in -3i64..=3,
+            uniform in proptest::option::of(0..Residues::modulus()),
         ) {
             let f = &*FIELD;
-            let image = Residues::trimmed(vec![f.neg(f.enter(r)), f.one]);
-            if let Some(h) = image.linear_candidate() {
-                let (n, d) = (-h.coeff(0), h.coeff(1));
-                prop_assert!(d.is_positive() && d.bits() <= 27 && n.bits() <= 27);
-                prop_assert_eq!(h.primitive_part(), h.clone());
-                let m = Int::from(Residues::modulus());
-                prop_assert!((&n - &(&d * &Int::from(r))).div_rem_trunc(&m).1.is_zero());
+            let reduce = |x: &Int| f.enter(x.mod_u64(f.p));
+            let short = f.mul(reduce(&Int::from(n)), f.inv(reduce(&Int::from(d))));
+            let r = match uniform {
+                Some(u) => f.enter(u),
+                None => f.add(short, reduce(&Int::from(k))),
+            };
+            let image = Residues::trimmed(vec![f.neg(r), f.one]);
+            let bound = Int::from(1i64 << 26);
+            match image.linear_candidate() {
+                Some(h) => {
+                    let (hn, hd) = (-h.coeff(0), h.coeff(1));
+                    prop_assert!(hd.is_positive() && hd <= bound && hn.abs() <= bound);
+                    prop_assert_eq!(h.primitive_part(), h.clone());
+                    prop_assert_eq!(f.mul(reduce(&hn), f.inv(reduce(&hd))), r);
+                }
+                None => prop_assert!(uniform.is_some() || k != 0, "{}/{}", n, d),
             }
-            let root = ZPoly::from_i64s(&[-n, d]).primitive_part();
-            prop_assert_eq!(Residues::of(&root).linear_candidate(), Some(root));
+            if uniform.is_none() && k == 0 {
+                let root = ZPoly::from_i64s(&[-n, d]).primitive_part();
+                prop_assert_eq!(image.linear_candidate(), Some(root));
+            }
         }
     }
 
