@@ -159,14 +159,14 @@ impl Coefficients {
     }
 
     /// Whether the closed form `q` is the zero polynomial, decided exactly
-    /// and once: for `sr0` first by a repeated factor of `f` in `λ` common
-    /// to every `t` ([`CharPoly::fixed_repeated_factor`], in the usual case
-    /// one gcd of quartics modulo a prime and a few evaluations, which,
-    /// when they find it, cost less than forming `sr0` even in `i128`
-    /// (when not, they are spent besides); the factor found is also `sr11`'s
-    /// hint, [`Coefficients::triple_root_instants`]), else by forming `q`
-    /// (at once when `f` is constant in `t`: then `q` is one closed form of
-    /// integers).
+    /// and once. For `sr0`, first by a repeated factor of `f` in `λ` common
+    /// to every `t` ([`CharPoly::fixed_repeated_factor`]: usually one gcd
+    /// of quartics modulo a prime and a few evaluations). Where it finds
+    /// one, that costs less than forming `sr0`, even in `i128`, and the
+    /// factor is also `sr11`'s hint ([`Coefficients::triple_root_instants`]);
+    /// where not, it is spent besides. Otherwise, and at once when `f` is
+    /// constant in `t` (then `q` is one closed form of integers), by
+    /// forming `q`.
     pub(crate) fn vanishes_identically(&self, q: Quantity) -> bool {
         *self.zero[slot(q)].get_or_init(|| {
             let fixed = || {

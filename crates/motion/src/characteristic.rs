@@ -199,7 +199,7 @@ impl CharPoly {
     /// evaluations: for a linear `h` that is `h² | F_j`). Otherwise the
     /// parts' gcd modulo the prime must keep a repeated factor; when that
     /// factor's image is linear with a short root, `h` is that root's
-    /// `d·λ − n`; otherwise `h` is the product of the distinct
+    /// `d·λ − n`, proven alike; otherwise `h` is the product of the distinct
     /// repeated factors of one `F_b` (the squarefree part of
     /// `gcd(F_b, F_b′)`; `b` the part with the fewest of them modulo a word
     /// prime, where the images' common gcd must have a repeated factor
@@ -240,21 +240,12 @@ impl CharPoly {
         let parts: Vec<ZPoly> = (0..=self.degree()).map(part).collect();
         // The repeated part gcd(r, r′) of an image.
         let repeated = |r: &Residues| r.gcd(&r.derivative());
-        // The usual case first, for one gcd of quartics modulo the word
-        // prime instead of one per part: the last nonzero image (of the
-        // top part, usually; F_0's has a repeated factor of its own where
-        // the bodies touch at t = 0). Its repeated part keeps h̄ (degree
-        // 0: no h, a filter's "no" as below); when that is linear, its
-        // short root is the candidate, proven by exact evaluations: for
-        // h = d·λ − n, h² | F_j ⇔ F_j(n/d) = F_j′(n/d) = 0. (A candidate
-        // that fails is tried again below, by division: rare, and cheap
-        // beside the gcds there.)
-        let last = parts.iter().rev().map(Residues::of).find(|r| !r.is_zero());
-        let last = repeated(&last?);
-        if last.degree().is_none_or(|d| d == 0) {
-            return None;
-        }
-        if let Some(h) = last.linear_candidate() {
+        // A short h read off a linear image (rational reconstruction: the
+        // usual double root, λ = −1 or a ratio of squared radii), proven
+        // by exact evaluations: for h = d·λ − n, h² | F_j ⇔ F_j(n/d) =
+        // F_j′(n/d) = 0.
+        let short_root = |image: &Residues| {
+            let h = image.linear_candidate()?;
             let root = Rat::new(-h.coeff(0), h.coeff(1)).expect("a linear h");
             let twice = |p: &ZPoly| {
                 p.is_zero() || {
@@ -262,9 +253,20 @@ impl CharPoly {
                     value.is_zero() && slope.is_zero()
                 }
             };
-            if parts.iter().all(twice) {
-                return Some(h);
-            }
+            parts.iter().all(twice).then_some(h)
+        };
+        // The usual case first, for one gcd of quartics modulo the word
+        // prime instead of one per part: the last nonzero image (of the
+        // top part, usually; F_0's has a repeated factor of its own where
+        // the bodies touch at t = 0). Its repeated part keeps h̄ (degree
+        // 0: no h, a filter's "no" as below).
+        let last = parts.iter().rev().map(Residues::of).find(|r| !r.is_zero());
+        let last = repeated(&last?);
+        if last.degree().is_none_or(|d| d == 0) {
+            return None;
+        }
+        if let Some(h) = short_root(&last) {
+            return Some(h);
         }
         // Modulo the word prime (a filter whose "no" may be wrong, when the
         // prime divides lc(h)): h̄² divides every image, so their gcd keeps
@@ -284,21 +286,14 @@ impl CharPoly {
         if image.degree().is_none_or(|d| d == 0) {
             return None;
         }
-        // Proven when h² divides every part but `known` (one it divides).
-        let proven = |h: ZPoly, known: Option<usize>| {
-            let h2 = &h * &h;
-            parts
-                .iter()
-                .enumerate()
-                .all(|(j, p)| Some(j) == known || p.div_exact(&h2).is_some())
-                .then_some(h)
-        };
-        // A short h read off the image (rational reconstruction: the usual
-        // double root, λ = −1 or a ratio of squared radii); else h from an
-        // exact gcd of the part with the fewest repeated factors of its own
-        // (F_0 has one more where the bodies touch at t = 0).
-        if let Some(h) = image.linear_candidate().and_then(|h| proven(h, None)) {
-            return Some(h);
+        // A short h read off the common image (unless it is the last one's,
+        // already tried); else h from an exact gcd of the part with the
+        // fewest repeated factors of its own (F_0 has one more where the
+        // bodies touch at t = 0), proven when h² divides every other part.
+        if image != last {
+            if let Some(h) = short_root(&image) {
+                return Some(h);
+            }
         }
         let base = (0..parts.len())
             .min_by_key(|&j| repeated(&images[j]).degree().unwrap_or(usize::MAX))
@@ -307,7 +302,10 @@ impl CharPoly {
         if g.degree().is_none_or(|d| d == 0) {
             return None;
         }
-        proven(g.squarefree_part(), Some(base))
+        let h = g.squarefree_part();
+        let h2 = &h * &h;
+        let divides = |(j, p): (usize, &ZPoly)| j == base || p.div_exact(&h2).is_some();
+        parts.iter().enumerate().all(divides).then_some(h)
     }
 
     /// `deg_t f`: the largest degree of a coefficient.
