@@ -55,6 +55,22 @@ pub struct Bernstein {
     coeffs: Vec<Int>,
 }
 
+/// The shortest `p` (its longest coefficient's bits) whose substitutions
+/// [`Bernstein::from_power_nested`] keeps: measured on the stability
+/// scenes' Newton zooms (docs/table4.md, issue 17, session 45).
+const NESTED_MIN_BITS: u64 = 1024;
+
+/// `2^m·p(lo + (hi − lo)·u)` for an interval `[lo, hi]` with dyadic ends and
+/// a width `2^(−k)`, its integer coefficients not all even: what
+/// [`Bernstein::from_power_nested`] keeps to substitute into for the next
+/// interval inside this one.
+#[derive(Clone, Debug)]
+pub struct Substitution {
+    lo: Rat,
+    hi: Rat,
+    coeffs: ZPoly,
+}
+
 /// Divides `coeffs` by their common power of two `2^tz` and returns `tz`
 /// (`None` when every one is 0).
 fn take_out_twos(coeffs: &mut [Int]) -> Option<u64> {
@@ -258,9 +274,9 @@ impl Bernstein {
     /// gives those of `p`.
     pub fn from_power(p: &ZPoly, lo: &Rat, hi: &Rat) -> Bernstein {
         assert!(lo < hi, "Bernstein::from_power: need lo < hi");
-        let Some(n) = p.degree() else {
+        if p.is_zero() {
             return Bernstein::from_parts(lo.clone(), hi.clone(), Rat::one(), vec![Int::zero()]);
-        };
+        }
         let w = hi - lo;
         // `d^n·p(lo + w·u)` with its common power of two taken out (cheap,
         // and after a substitution with a dyadic `w` the whole content in
@@ -270,10 +286,96 @@ impl Bernstein {
         // coefficients of thousands of bits.
         let mut big_p = p.compose_affine_multiple(lo, &w).into_coeffs();
         take_out_twos(&mut big_p);
-        let mut wn = Rat::one();
-        for _ in 0..n {
-            wn = &wn * &w;
+        Bernstein::from_substituted(p, big_p, lo, hi)
+    }
+
+    /// [`Bernstein::from_power`] on `[lo, hi]`, from the substitution kept
+    /// in `last` where that holds the interval and costs less: for
+    /// `[lo, hi] ⊂ [l, h]` with dyadic ends and `h − l = 2^(−k)`,
+    /// `p(lo + w·u) = p(l + (h − l)·(a + b·u))` with the dyadic `a = (lo −
+    /// l)/(h − l)` and `b = w/(h − l)`, whose denominators are short where
+    /// the interval is deep (a root isolation's Newton zooms: `a` has the
+    /// zoom's bits, `lo` those of the whole descent). The result is the
+    /// very `Bernstein` of [`Bernstein::from_power`]: both substitutions
+    /// give a power of two times `p(lo + w·u)`, whose integer multiple with
+    /// an odd common content is unique. With `keep` (and dyadic ends, a
+    /// width `2^(−k)`), `last` then holds this interval's substitution.
+    ///
+    /// Which substitution costs less: the Taylor shift's `n²/2` products by
+    /// a shift of `s` bits, on coefficients growing from `B` bits by `s` a
+    /// step, cost about `s·(B + n·s/2)`: `s` the bits of `lo`'s
+    /// denominator and `B` those of `p`, against those of `a`'s and of the
+    /// kept coefficients (longer than `p`'s by about `n` times the depth).
+    ///
+    /// ```
+    /// use ccd_arith::Rat;
+    /// use ccd_poly::{Bernstein, ZPoly};
+    /// let p = ZPoly::from_i64s(&[-2, 0, 3, 1]);
+    /// let (mut last, q) = (None, |n, k| Rat::dyadic(ccd_arith::Int::from(n), k));
+    /// for (lo, hi) in [(q(0, 0), q(1, 0)), (q(1, 2), q(3, 2)), (q(9, 4), q(37, 6))] {
+    ///     let nested = Bernstein::from_power_nested(&p, &lo, &hi, &mut last, true);
+    ///     assert_eq!(nested, Bernstein::from_power(&p, &lo, &hi));
+    /// }
+    /// ```
+    pub fn from_power_nested(
+        p: &ZPoly,
+        lo: &Rat,
+        hi: &Rat,
+        last: &mut Option<Substitution>,
+        keep: bool,
+    ) -> Bernstein {
+        assert!(lo < hi, "Bernstein::from_power_nested: need lo < hi");
+        let dyadic = lo.dyadic_exponent().is_some() && hi.dyadic_exponent().is_some();
+        let Some(n) = p.degree().filter(|&n| n > 0 && dyadic) else {
+            return Bernstein::from_power(p, lo, hi);
+        };
+        let w = hi - lo;
+        let cost = |s: u64, b: u64| s * (b + n as u64 * s / 2);
+        let from_last = last
+            .as_ref()
+            .filter(|s| &s.lo <= lo && hi <= &s.hi)
+            .map(|s| {
+                let ws = &s.hi - &s.lo;
+                (s, &(lo - &s.lo) / &ws, &w / &ws)
+            })
+            .filter(|(s, a, b)| {
+                let bits = |x: &Rat, y: &Rat| x.denom().bits().max(y.denom().bits());
+                cost(bits(a, b), s.coeffs.max_bits()) < cost(bits(lo, &w), p.max_bits())
+            });
+        let mut big_p = match from_last {
+            Some((s, a, b)) => s.coeffs.compose_affine_multiple(&a, &b),
+            None => p.compose_affine_multiple(lo, &w),
         }
+        .into_coeffs();
+        take_out_twos(&mut big_p);
+        // Kept where a nested interval's ratios stay dyadic (a width
+        // `2^(−k)`) and `p` is long: on short coefficients the shorter
+        // shift saves less than the copy and the ratios cost.
+        if keep && w.numer().is_one() && p.max_bits() >= NESTED_MIN_BITS {
+            *last = Some(Substitution {
+                lo: lo.clone(),
+                hi: hi.clone(),
+                coeffs: ZPoly::new(big_p.clone()),
+            });
+        }
+        Bernstein::from_substituted(p, big_p, lo, hi)
+    }
+
+    /// The Bernstein form of `p` (degree `n ≥ 1`) on `[lo, hi]` from
+    /// `big_p = κ·p(lo + w·u)` (`w = hi − lo`, some `κ > 0`, coefficients
+    /// low → high): `κ = lc(big_p)/(lc(p)·w^n)`; the Bernstein coefficients
+    /// of `big_p` on `[0, 1]` are `c_i / C(n, i)` with `c` from
+    /// reverse–shift–reverse (module docs); dividing by `κ` gives those of
+    /// `p`.
+    #[inline]
+    fn from_substituted(p: &ZPoly, big_p: Vec<Int>, lo: &Rat, hi: &Rat) -> Bernstein {
+        let n = big_p.len() - 1;
+        let w = hi - lo;
+        // `w^n`: a shift where `w = 2^(−k)` (bisections and zooms).
+        let wn = match w.dyadic_exponent().filter(|_| w.numer().is_one()) {
+            Some(k) => Rat::one().mul_pow2(-((k * n as u64) as i64)),
+            None => (0..n).fold(Rat::one(), |x, _| &x * &w),
+        };
         let lc_exact = &Rat::from_int(p.leading().expect("nonzero").clone()) * &wn;
         let kappa = &Rat::from_int(big_p[n].clone()) / &lc_exact;
         let c = reverse_shift_reverse(big_p, 1);
@@ -596,6 +698,40 @@ mod tests {
             prop_assert_eq!(e.eval(&t), b.eval(&t));
             let q = QPoly::from_zpoly(&p).mul_rat(&t);
             prop_assert_eq!(Bernstein::from_qpoly(&q, &lo, &hi).eval(&lo), q.eval_rat(&lo));
+        }
+
+        /// The nested conversion is the conversion, bit for bit, along a
+        /// chain of intervals as a root isolation's zooms make them (each
+        /// a dyadic subinterval `[i/2^s, (i + j)/2^s]` of the last, some of
+        /// width `2^(−k)`, which are kept), with steps that must not use
+        /// the kept substitution mixed in: an interval outside it, one
+        /// with a non-dyadic end, one overlapping it.
+        #[test]
+        fn nested_conversion_is_the_conversion(
+            p in zpoly(12, 300),
+            steps in proptest::collection::vec((1u64..40, any::<u64>(), 1u64..5, 0u8..8), 1..7),
+        ) {
+            let mut last = None;
+            let (mut lo, mut hi) = (Rat::zero(), Rat::one());
+            for (s, i, j, kind) in steps {
+                let total = 1u64 << s.min(62);
+                let i = i % total;
+                let j = j.min(total - i);
+                let w = &hi - &lo;
+                let at = |k: u64| &lo + &(&w * &Rat::dyadic(Int::from_u64(k), s.min(62)));
+                let (a, b) = match kind {
+                    // Outside: the next interval to the right, as wide.
+                    0 => (hi.clone(), &hi + &w),
+                    // A non-dyadic end.
+                    1 => (at(i), &at(i) + &(&w * &Rat::from_frac(1, 3))),
+                    // Overlapping the last on its left.
+                    2 => (&lo - &(&w * &Rat::from_frac(1, 2)), at(i.max(1))),
+                    _ => (at(i), at(i + j)),
+                };
+                let nested = Bernstein::from_power_nested(&p, &a, &b, &mut last, kind != 7);
+                prop_assert_eq!(&nested, &Bernstein::from_power(&p, &a, &b));
+                (lo, hi) = (a, b);
+            }
         }
 
         #[test]

@@ -28,7 +28,7 @@ mod residue;
 mod small;
 mod zpoly;
 
-pub use bernstein::{bernstein_to_power, binomials, Bernstein};
+pub use bernstein::{bernstein_to_power, binomials, Bernstein, Substitution};
 pub use bernstein_f64::BernsteinF64;
 pub use qpoly::QPoly;
 pub use residue::Residues;

@@ -25,7 +25,7 @@ use crate::filter_bernstein::FilterBernstein;
 use crate::model::{SignModel, SignProbe};
 use crate::root::RealRoot;
 use ccd_arith::{Dyadic, Int, Interval, Rat};
-use ccd_poly::{Bernstein, ZPoly};
+use ccd_poly::{Bernstein, Substitution};
 use std::sync::Arc;
 
 /// Subdivision depth at which a filter-only isolation gives up: the
@@ -211,11 +211,16 @@ impl Node {
         w.denom().bits() as i64 - w.numer().bits() as i64
     }
 
-    fn exact(p: &ZPoly, lo: Rat, hi: Rat, depth: u32) -> Node {
-        let b = Bernstein::from_power(p, &lo, &hi);
+    #[cfg(test)]
+    fn exact(p: &ccd_poly::ZPoly, lo: Rat, hi: Rat, depth: u32) -> Node {
+        Node::with_exact(Bernstein::from_power(p, &lo, &hi), depth)
+    }
+
+    /// The node of exact coefficients `b`, on `b`'s interval.
+    fn with_exact(b: Bernstein, depth: u32) -> Node {
         Node {
-            lo,
-            hi,
+            lo: b.lo().clone(),
+            hi: b.hi().clone(),
             depth,
             coeffs: Coeffs::Exact(b),
             cluster: Cluster::default(),
@@ -366,6 +371,11 @@ pub struct RootIter<M: SignModel + Clone = Arc<SignProbe>> {
     /// isolation stops once it passes `max_work` ([`RootIter::exhausted`]).
     work: u64,
     max_work: u64,
+    /// The last exact conversion's substitution into `p`, from which a
+    /// conversion on an interval inside it starts
+    /// ([`Bernstein::from_power_nested`]): a Newton zoom's interval lies
+    /// in the node it zooms from, itself the previous zoom's.
+    substitution: Option<Substitution>,
 }
 
 /// The default bound on an isolation's exact work (`exact_work`), about
@@ -449,6 +459,7 @@ impl RootIter<Arc<SignProbe>> {
             splits: 0,
             work: 0,
             max_work: MAX_EXACT_WORK,
+            substitution: None,
         }
     }
 }
@@ -491,6 +502,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             splits: 0,
             work: 0,
             max_work: MAX_EXACT_WORK,
+            substitution: None,
         }
     }
 
@@ -600,6 +612,16 @@ impl<M: SignModel + Clone> RootIter<M> {
         self.stack.push(Item::Node(left));
     }
 
+    /// `p`'s exact Bernstein form on `[lo, hi]`, from the kept substitution
+    /// where that is shorter (and kept in turn with `keep`:
+    /// [`Bernstein::from_power_nested`]), its work charged.
+    fn exact_on(&mut self, lo: &Rat, hi: &Rat, keep: bool) -> Bernstein {
+        let b =
+            Bernstein::from_power_nested(self.base.exact(), lo, hi, &mut self.substitution, keep);
+        self.charge(&b, end_bits(&b));
+        b
+    }
+
     /// A Newton zoom into a root cluster (the Newton test of Sagraloff and
     /// Mehlhorn's ANewDsc): for a node `I` of width `w` whose `k ≥ 2` sign
     /// variations have not dropped for [`ZOOM_STREAK`] generations, the
@@ -646,7 +668,10 @@ impl<M: SignModel + Clone> RootIter<M> {
         let i = (estimate - Int::from(2)).clamp(Int::zero(), &total - &four);
         // Both cuts are dyadic splits of I's own coefficients; I′ itself
         // comes from the power basis (a split of a split would cut at a
-        // non-dyadic ratio, with a rational scale to reduce). Each side is
+        // non-dyadic ratio, with a rational scale to reduce), through the
+        // previous zoom's substitution where that is shorter
+        // ([`Bernstein::from_power_nested`]: `I′`'s offset in it has this
+        // zoom's bits, not the whole descent's). Each side is
         // first tried in intervals around the coefficients
         // ([`FilterBernstein::side_root_free`]: the early zooms, up to
         // about 2⁻²⁴ of I, decide there), exactly only where they leave it
@@ -669,11 +694,9 @@ impl<M: SignModel + Clone> RootIter<M> {
             }
             let b = match &node.coeffs {
                 Coeffs::Exact(b) => b,
-                Coeffs::Filter(_) => converted.get_or_insert_with(|| {
-                    let b = Bernstein::from_power(self.base.exact(), &node.lo, &node.hi);
-                    self.charge(&b, end_bits(&b));
-                    b
-                }),
+                Coeffs::Filter(_) => {
+                    converted.get_or_insert_with(|| self.exact_on(&node.lo, &node.hi, false))
+                }
             };
             let (l, r) = b.split(&cut(j));
             let side = if left { l } else { r };
@@ -688,8 +711,7 @@ impl<M: SignModel + Clone> RootIter<M> {
             }
         }
         let at = |j: &Int| &node.lo + &(&w * &cut(j));
-        let middle = Bernstein::from_power(self.base.exact(), &at(&i), &at(&end));
-        self.charge(&middle, end_bits(&middle));
+        let middle = self.exact_on(&at(&i), &at(&end), true);
         let cluster = Cluster {
             var: k,
             streak: ZOOM_STREAK,
@@ -943,11 +965,8 @@ impl<M: SignModel + Clone> Iterator for RootIter<M> {
                     // The filter cannot sign a coefficient: redo this node
                     // exactly.
                     self.float_failures += 1;
-                    let exact = Node::exact(self.base.exact(), node.lo, node.hi, node.depth);
-                    if let Coeffs::Exact(b) = &exact.coeffs {
-                        self.charge(b, end_bits(b));
-                    }
-                    self.stack.push(Item::Node(exact));
+                    let b = self.exact_on(&node.lo, &node.hi, false);
+                    self.stack.push(Item::Node(Node::with_exact(b, node.depth)));
                     continue;
                 }
             };
