@@ -329,7 +329,7 @@ impl Bernstein {
         let Some(n) = p.degree().filter(|&n| n > 0 && dyadic) else {
             return Bernstein::from_power(p, lo, hi);
         };
-        let w = hi - lo;
+        let (w, p_bits) = (hi - lo, p.max_bits());
         let cost = |s: u64, b: u64| s * (b + n as u64 * s / 2);
         let from_last = last
             .as_ref()
@@ -340,7 +340,7 @@ impl Bernstein {
             })
             .filter(|(s, a, b)| {
                 let bits = |x: &Rat, y: &Rat| x.denom().bits().max(y.denom().bits());
-                cost(bits(a, b), s.coeffs.max_bits()) < cost(bits(lo, &w), p.max_bits())
+                cost(bits(a, b), s.coeffs.max_bits()) < cost(bits(lo, &w), p_bits)
             });
         let mut big_p = match from_last {
             Some((s, a, b)) => s.coeffs.compose_affine_multiple(&a, &b),
@@ -351,7 +351,7 @@ impl Bernstein {
         // Kept where a nested interval's ratios stay dyadic (a width
         // `2^(−k)`) and `p` is long: on short coefficients the shorter
         // shift saves less than the copy and the ratios cost.
-        if keep && w.numer().is_one() && p.max_bits() >= NESTED_MIN_BITS {
+        if keep && w.numer().is_one() && p_bits >= NESTED_MIN_BITS {
             *last = Some(Substitution {
                 lo: lo.clone(),
                 hi: hi.clone(),
@@ -367,7 +367,6 @@ impl Bernstein {
     /// of `big_p` on `[0, 1]` are `c_i / C(n, i)` with `c` from
     /// reverse–shift–reverse (module docs); dividing by `κ` gives those of
     /// `p`.
-    #[inline]
     fn from_substituted(p: &ZPoly, big_p: Vec<Int>, lo: &Rat, hi: &Rat) -> Bernstein {
         let n = big_p.len() - 1;
         let w = hi - lo;

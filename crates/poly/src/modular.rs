@@ -335,15 +335,15 @@ pub(crate) fn gcd(a: &ZPoly, b: &ZPoly) -> ZPoly {
 
 /// [`gcd`] and the number of primes whose images it took.
 fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
-    let (g, used, _) = gcd_given(a, b, false, false);
+    let (g, used, _) = gcd_given(a, b, false);
     (g, used)
 }
 
-/// [`gcd_counted`], told whether `a` is known to be primitive (its content,
-/// a gcd of long coefficients, is then not taken again) and whether `b`
-/// may keep its content (`b_as_given`: `b = a′` of a primitive `a`, for
-/// the squarefree part), and with the cofactor `pp(a)/gcd` when the trial
-/// division formed it (a lifted gcd of positive degree). `G` is primitive,
+/// [`gcd_counted`], told whether its inputs' contents need not be taken
+/// (`contents_known`: `a` is primitive, and `b` may keep its content, as
+/// the squarefree part's `b = a′` does; a gcd of long coefficients each),
+/// and with the cofactor `pp(a)/gcd` when the trial division formed it (a
+/// lifted gcd of positive degree). `G` is primitive,
 /// so `G | b` exactly when `G | pp(b)` (Gauss's lemma: the trial division
 /// holds either way), and `lc(G)` divides `lc(b)` as it divides
 /// `lc(pp(b))`: `γ = gcd(lc a, lc b)`, a multiple of the primitive parts'
@@ -351,12 +351,7 @@ fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
 /// docs (2)), which only needs as many more bits of modulus. The content
 /// of `a′` is usually one or small, and its gcd of long coefficients costs
 /// about a third of the lift's set-up.
-fn gcd_given(
-    a: &ZPoly,
-    b: &ZPoly,
-    a_primitive: bool,
-    b_as_given: bool,
-) -> (ZPoly, usize, Option<ZPoly>) {
+fn gcd_given(a: &ZPoly, b: &ZPoly, contents_known: bool) -> (ZPoly, usize, Option<ZPoly>) {
     let (Some(da), Some(db)) = (a.degree(), b.degree()) else {
         let g = if a.is_zero() {
             b.primitive_part()
@@ -397,8 +392,7 @@ fn gcd_given(
         if d == 0 {
             return (ZPoly::one(), used, None);
         }
-        let oriented =
-            primitive.get_or_insert_with(|| Oriented::new(a, b, (a_primitive, b_as_given), until));
+        let oriented = primitive.get_or_insert_with(|| Oriented::new(a, b, contents_known, until));
         // Once the monic lift is given up, the scaled one may go on
         // reversed, from new images, when that needs fewer primes.
         if let Some(images) = best.as_ref().filter(|i| i.monic.is_none()) {
@@ -466,8 +460,8 @@ fn gcd_given(
     unreachable!("the prime loop only ends by returning")
 }
 
-/// The primitive parts `a`, `b` whose gcd is lifted (`b` as given where
-/// [`gcd_given`] is told so), and their `γ`, as
+/// The primitive parts `a`, `b` whose gcd is lifted (as given where
+/// [`gcd_given`] is told their contents are known), and their `γ`, as
 /// given or reversed (`t ↦ 1/t`). The scaled lift (module docs (2)) needs a
 /// modulus past `2·γ/lc(G)·‖G‖∞`: for a squarefree part, `b = a′`, so
 /// `γ = gcd(lc a, lc a′)` is `lc a` up to `deg a`, as long as `a`'s
@@ -489,21 +483,11 @@ struct Oriented {
 }
 
 impl Oriented {
-    fn new(
-        a: &ZPoly,
-        b: &ZPoly,
-        (a_primitive, b_as_given): (bool, bool),
-        until: impl Fn(&Int) -> usize,
-    ) -> Oriented {
-        let pa = if a_primitive {
-            a.clone()
+    fn new(a: &ZPoly, b: &ZPoly, contents_known: bool, until: impl Fn(&Int) -> usize) -> Oriented {
+        let (pa, pb) = if contents_known {
+            (a.clone(), b.clone())
         } else {
-            a.primitive_part()
-        };
-        let pb = if b_as_given {
-            b.clone()
-        } else {
-            b.primitive_part()
+            (a.primitive_part(), b.primitive_part())
         };
         let gamma = (pa.leading().expect("nonzero")).gcd(pb.leading().expect("nonzero"));
         Oriented {
@@ -644,7 +628,7 @@ impl ZPoly {
         // lemma), with a positive leading coefficient: `p`'s content is
         // taken once, for the gcd and the result.
         let p = self.primitive_part();
-        let (g, _, cofactor) = gcd_given(&p, &p.derivative(), true, true);
+        let (g, _, cofactor) = gcd_given(&p, &p.derivative(), true);
         if g.degree() == Some(0) {
             return p;
         }
@@ -1126,7 +1110,7 @@ mod gcd_tests {
             prop_assert_eq!(p.squarefree_part(), expected);
         }
 
-        /// `b` kept with its content (`b_as_given`, as for `a′` in the
+        /// `b` kept with its content (`contents_known`, as for `a′` in the
         /// squarefree part): the same gcd and cofactor as from `pp(b)`, for a
         /// content coprime to everything or a multiple of `lc(a)` (which
         /// makes `γ` that much longer).
@@ -1139,8 +1123,8 @@ mod gcd_tests {
             let (a, b) = (&nonzero_constant(a) * &g, &nonzero_constant(b) * &g);
             let lc = a.leading().expect("nonzero").clone();
             let content = if shared { &lc * &Int::from(c) } else { Int::from(c) };
-            let (want, _, cofactor) = super::gcd_given(&a, &b.primitive_part(), false, false);
-            let (got, _, got_cofactor) = super::gcd_given(&a, &b.mul_int(&content), false, true);
+            let (want, _, cofactor) = super::gcd_given(&a, &b.primitive_part(), false);
+            let (got, _, got_cofactor) = super::gcd_given(&a.primitive_part(), &b.mul_int(&content), true);
             prop_assert_eq!(&got, &want);
             prop_assert_eq!(got_cofactor, cofactor);
             is_the_gcd(&got, &a, &b, &g)?;
