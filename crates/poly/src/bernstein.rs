@@ -71,6 +71,18 @@ pub struct Substitution {
     coeffs: ZPoly,
 }
 
+/// `d^n·q(a + b·u)` (`q.compose_affine_multiple(a, b)`, coefficients low
+/// → high) with its common power of two taken out: cheap, and after a
+/// substitution with a dyadic `b` the whole content in practice. An odd
+/// common factor, if any, stays (as for the children of a split,
+/// `normalised` with `content` unset): the gcd that would find it costs
+/// more than the conversion on coefficients of thousands of bits.
+fn substituted(q: &ZPoly, a: &Rat, b: &Rat) -> Vec<Int> {
+    let mut c = q.compose_affine_multiple(a, b).into_coeffs();
+    take_out_twos(&mut c);
+    c
+}
+
 /// Divides `coeffs` by their common power of two `2^tz` and returns `tz`
 /// (`None` when every one is 0).
 fn take_out_twos(coeffs: &mut [Int]) -> Option<u64> {
@@ -277,16 +289,7 @@ impl Bernstein {
         if p.is_zero() {
             return Bernstein::from_parts(lo.clone(), hi.clone(), Rat::one(), vec![Int::zero()]);
         }
-        let w = hi - lo;
-        // `d^n·p(lo + w·u)` with its common power of two taken out (cheap,
-        // and after a substitution with a dyadic `w` the whole content in
-        // practice); an odd common factor, if any, stays (as for the
-        // children of a split, `normalised` with `content` unset): the gcd
-        // that would find it costs more than the conversion on
-        // coefficients of thousands of bits.
-        let mut big_p = p.compose_affine_multiple(lo, &w).into_coeffs();
-        take_out_twos(&mut big_p);
-        Bernstein::from_substituted(p, big_p, lo, hi)
+        Bernstein::from_substituted(p, substituted(p, lo, &(hi - lo)), lo, hi)
     }
 
     /// [`Bernstein::from_power`] on `[lo, hi]`, from the substitution kept
@@ -342,12 +345,10 @@ impl Bernstein {
                 let bits = |x: &Rat, y: &Rat| x.denom().bits().max(y.denom().bits());
                 cost(bits(a, b), s.coeffs.max_bits()) < cost(bits(lo, &w), p_bits)
             });
-        let mut big_p = match from_last {
-            Some((s, a, b)) => s.coeffs.compose_affine_multiple(&a, &b),
-            None => p.compose_affine_multiple(lo, &w),
-        }
-        .into_coeffs();
-        take_out_twos(&mut big_p);
+        let big_p = match from_last {
+            Some((s, a, b)) => substituted(&s.coeffs, &a, &b),
+            None => substituted(p, lo, &w),
+        };
         // Kept where a nested interval's ratios stay dyadic (a width
         // `2^(−k)`) and `p` is long: on short coefficients the shorter
         // shift saves less than the copy and the ratios cost.
@@ -361,7 +362,7 @@ impl Bernstein {
         Bernstein::from_substituted(p, big_p, lo, hi)
     }
 
-    /// The Bernstein form of `p` (degree `n ≥ 1`) on `[lo, hi]` from
+    /// The Bernstein form of `p` (degree `n`, nonzero) on `[lo, hi]` from
     /// `big_p = κ·p(lo + w·u)` (`w = hi − lo`, some `κ > 0`, coefficients
     /// low → high): `κ = lc(big_p)/(lc(p)·w^n)`; the Bernstein coefficients
     /// of `big_p` on `[0, 1]` are `c_i / C(n, i)` with `c` from
