@@ -344,9 +344,9 @@ fn gcd_counted(a: &ZPoly, b: &ZPoly) -> (ZPoly, usize) {
 /// the squarefree part's `b = a′` does; a gcd of long coefficients each),
 /// and with the cofactor `pp(a)/gcd` when the trial division formed it (a
 /// lifted gcd of positive degree). `G` is primitive, so `G | b` exactly
-/// when `G | pp(b)` (Gauss's lemma: the trial division
-/// holds either way), and `lc(G)` divides `lc(b)` as it divides
-/// `lc(pp(b))`: `γ = gcd(lc a, lc b)`, a multiple of the primitive parts'
+/// when `G | pp(b)` (Gauss's lemma: the trial division holds either way),
+/// and `lc(G)` divides `lc(b)` as it divides `lc(pp(b))`:
+/// `γ = gcd(lc a, lc b)`, a multiple of the primitive parts'
 /// by at most `b`'s content, still makes `H = (γ/lc G)·G` integral (module
 /// docs (2)), which only needs as many more bits of modulus. The content
 /// of `a′` is usually one or small, and its gcd of long coefficients costs
