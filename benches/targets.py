@@ -1,0 +1,272 @@
+#!/usr/bin/env python3
+"""Every target row of issue 17 ("Speed: certified answers at the cost of
+floats"), measured in one run on this host, as the markdown table of
+docs/table4.md: the number, the target, and whether it is met.
+
+    python3 benches/targets.py --speed target/release/examples/speed \
+        --bin target/release/ccd-exact [--class-passes 60] [--quick]
+
+(benches/targets.sh builds both and runs this.) The rows and their method
+are those of docs/table4.md, issue 17, session 48:
+
+* the five timing classes (benches/classes.sh) and the static pair
+  (benches/scenes/static-apart.toml): `--class-passes` runs of
+  `examples/speed --reps 101`, the median of the per-pass medians, for the
+  exact total, the exact first contact and the float mode; the exact /
+  float ratio per class from those medians;
+* the stability set (tests/stability, every scene): `--stability-passes`
+  runs of `speed --reps 21`, per scene the minimum of the per-pass
+  medians (this host has slow spells of seconds), then the median and the
+  maximum over the scenes;
+* the straight-line scenes (benches/straight_lines.py, the scenes of
+  benches/compare): `--line-passes` runs of `speed --reps 101`, per scene
+  the minimum over the passes, then medians over the scenes of the default
+  path and of `--raycast`, total and first contact;
+* the CLI's whole process (`ccd-exact` on Example 5.1 with `--json`,
+  started `--spawns` times by `posix_spawn`, its output discarded) against
+  the library call (Example 5.1's exact total above).
+
+Everything runs pinned to one CPU (`--cpu`, by default the last one; the
+children inherit the affinity), one measurement after the other: run it
+on an otherwise idle machine. `--quick` (one pass, 3 repetitions, 20
+spawns) checks the plumbing in a few seconds; its numbers mean nothing.
+Progress goes to stderr, the table to stdout.
+"""
+
+import argparse
+import datetime
+import glob
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+from straight_lines import EXAMPLE_5_1, select_scenes
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+STATIC = "benches/scenes/static-apart.toml"
+# The classes' names in the table, by scene file (benches/classes.sh).
+CLASS_NAMES = {
+    "rigid-deg2.toml": "degree-2 rigid",
+    "affine-deg2.toml": "degree-2 affine",
+    "affine-rational-deg2.toml": "degree-4 affine",
+    "paper-example-5-1.toml": "Example 5.1",
+    "rigid-tumbling.toml": "tumbling",
+}
+# Issue 17's targets (µs, or a ratio).
+RIGID_TOTAL = 55.0
+AFFINE2_TOTAL = 250.0
+AFFINE4_TOTAL, AFFINE4_FIRST = 250.0, 180.0
+RATIO = 1.3
+STABILITY_MEDIAN, STABILITY_SPREAD = 120.0, 20.0
+LINES_TOTAL, LINES_FIRST = 42.0, 10.0
+STATIC_TOTAL = 5.0
+# `examples/speed`'s columns (after the scene's name), by what they hold.
+COLUMNS = {"exact": 1, "first": 2, "float": 3, "ray": 8, "ray_first": 9}
+
+
+def log(msg):
+    print(msg, file=sys.stderr, flush=True)
+
+
+def classes():
+    """The scene paths of benches/classes.sh's CLASSES array."""
+    with open(os.path.join(ROOT, "benches/classes.sh")) as fh:
+        text = fh.read()
+    body = re.search(r"CLASSES=\((.*?)\)", text, re.S).group(1)
+    return body.split()
+
+
+def speed(binary, reps, paths):
+    """One run of `examples/speed`: {scene file name: {column: µs, "path":
+    the path that answered --raycast}} (a scene it cannot run is left out,
+    as speed reports it on stderr)."""
+    out = subprocess.run(
+        [binary, "--reps", str(reps), *paths], cwd=ROOT, capture_output=True, text=True, check=True
+    )
+    rows = {}
+    for line in out.stdout.splitlines()[1:]:
+        cols = line.split("\t")
+        row = {key: float(cols[i]) for key, i in COLUMNS.items()}
+        row["path"] = cols[10]
+        rows[cols[0]] = row
+    return rows
+
+
+def passes(binary, reps, paths, count, label):
+    """`count` runs of `speed` over `paths`: {scene: {column: [µs per pass]}}."""
+    runs = {}
+    for k in range(count):
+        log(f"{label}: pass {k + 1} of {count}")
+        for name, row in speed(binary, reps, paths).items():
+            cell = runs.setdefault(name, {"path": row["path"]})
+            for key in COLUMNS:
+                cell.setdefault(key, []).append(row[key])
+    return runs
+
+
+def median_of(runs, name, key):
+    return statistics.median(runs[name][key])
+
+
+def spawn_ms(binary, args, count):
+    """Median and minimum (ms) of `count` whole processes of `binary args`,
+    each started by `posix_spawn` and waited for, stdout discarded (the
+    first five, warming the page cache, not counted)."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    argv = [binary, *args]
+    times = []
+    for i in range(count + 5):
+        start = time.perf_counter()
+        pid = os.posix_spawn(binary, argv, os.environ, file_actions=[(os.POSIX_SPAWN_DUP2, devnull, 1)])
+        _, status = os.waitpid(pid, 0)
+        if status != 0:
+            sys.exit(f"{' '.join(argv)}: exit status {status}")
+        if i >= 5:
+            times.append((time.perf_counter() - start) * 1e3)
+    os.close(devnull)
+    return statistics.median(times), min(times)
+
+
+def verdict(ok):
+    return "yes" if ok else "**no**"
+
+
+def bold(text, ok):
+    return text if ok else f"**{text}**"
+
+
+def host():
+    """One line naming the host: CPU model, CPUs, load."""
+    model = platform.processor() or "?"
+    try:
+        with open("/proc/cpuinfo") as fh:
+            model = next(line.split(":", 1)[1].strip() for line in fh if line.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    load = " / ".join(f"{x:.2f}" for x in os.getloadavg())
+    return f"{model}, {os.cpu_count()} CPUs, load average {load} at the start"
+
+
+def commit():
+    out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True)
+    return out.stdout.strip() or "?"
+
+
+def measure(args):
+    class_paths = classes() + [STATIC]
+    runs = passes(args.speed, args.class_reps, class_paths, args.class_passes, "classes")
+    stability_paths = sorted(glob.glob("tests/stability/*.toml", root_dir=ROOT))
+    stability = passes(args.speed, args.stability_reps, stability_paths, args.stability_passes, "stability")
+    line_paths = [p for p in select_scenes(ROOT) if p != EXAMPLE_5_1]
+    lines = passes(args.speed, args.line_reps, line_paths, args.line_passes, "straight lines")
+    log(f"the CLI's whole process: {args.spawns} spawns")
+    cli = spawn_ms(args.bin, [EXAMPLE_5_1, "--json"], args.spawns)
+    return runs, stability, lines, cli
+
+
+def table(runs, stability, lines, cli):
+    """The markdown rows: target, measured, met."""
+    med = lambda scene, key: median_of(runs, scene, key)
+    ratios = {name: med(scene, "exact") / med(scene, "float") for scene, name in CLASS_NAMES.items()}
+    ratio_cells = ", ".join(
+        bold(f"{name} {med(scene, 'exact'):.1f} / {med(scene, 'float'):.1f} = {ratios[name]:.2f}", ratios[name] <= RATIO)
+        for scene, name in CLASS_NAMES.items()
+    )
+    missed = [name for name, r in ratios.items() if r > RATIO]
+    stab = {name: min(cell["exact"]) for name, cell in stability.items()}
+    stab_median = statistics.median(stab.values())
+    worst = max(stab, key=stab.get)
+    spread = stab[worst] / stab_median
+    line_med = lambda key: statistics.median(min(cell[key]) for cell in lines.values())
+    answered = sum(1 for cell in lines.values() if cell["path"] == "raycast")
+    default_ok = line_med("exact") <= LINES_TOTAL and line_med("first") <= LINES_FIRST
+    ray_ok = line_med("ray") <= LINES_TOTAL and line_med("ray_first") <= LINES_FIRST
+    rigid, aff2, aff4 = "rigid-deg2.toml", "affine-deg2.toml", "affine-rational-deg2.toml"
+    example = os.path.basename(EXAMPLE_5_1)
+    static = os.path.basename(STATIC)
+    rows = [
+        (f"degree-2 rigid, exact total ≤ {RIGID_TOTAL:.0f} µs", f"{med(rigid, 'exact'):.1f} µs", med(rigid, "exact") <= RIGID_TOTAL),
+        (f"degree-2 affine, exact total ≤ {AFFINE2_TOTAL:.0f} µs", f"{med(aff2, 'exact'):.1f} µs", med(aff2, "exact") <= AFFINE2_TOTAL),
+        (
+            f"degree-4 affine, exact total / first contact ≤ {AFFINE4_TOTAL:.0f} / {AFFINE4_FIRST:.0f} µs",
+            f"{med(aff4, 'exact'):.1f} / {med(aff4, 'first'):.1f} µs",
+            med(aff4, "exact") <= AFFINE4_TOTAL and med(aff4, "first") <= AFFINE4_FIRST,
+        ),
+        (f"exact / own float ≤ {RATIO}× on every class", ratio_cells, not missed),
+        (
+            f"stability set ({len(stab)} scenes): median ≤ {STABILITY_MEDIAN:.0f} µs, max ≤ {STABILITY_SPREAD:.0f}× median",
+            f"median {stab_median:.1f} µs; max `{worst.removesuffix('.toml')}` {stab[worst]:,.1f} µs = "
+            + bold(f"{spread:.1f}×", spread <= STABILITY_SPREAD),
+            stab_median <= STABILITY_MEDIAN and spread <= STABILITY_SPREAD,
+        ),
+        (
+            f"straight lines ({len(lines)} scenes, medians): total ≤ {LINES_TOTAL:.0f} µs, first contact ≤ {LINES_FIRST:.0f} µs",
+            bold(f"default {line_med('exact'):.1f} / {line_med('first'):.1f} µs", default_ok)
+            + f"; `--raycast` {line_med('ray'):.1f} / {line_med('ray_first'):.1f} µs "
+            f"({answered} answered by the ray cast, the rest by Algorithm 1)",
+            default_ok,
+        ),
+        (f"a static pair's query ≤ {STATIC_TOTAL:.0f} µs (`static-apart`)", f"{med(static, 'exact'):.1f} µs", med(static, "exact") <= STATIC_TOTAL),
+        (
+            "a query's library call vs the CLI's whole process (Example 5.1, `--json`)",
+            f"{med(example, 'exact'):.1f} µs against {cli[0]:.2f} ms (minimum {cli[1]:.2f} ms)",
+            None,
+        ),
+    ]
+    out = ["| target | measured | met? |", "| --- | --- | --- |"]
+    for target, measured, ok in rows:
+        met = "stated" if ok is None else verdict(ok)
+        if target.startswith("straight lines") and not ok and ray_ok:
+            met += " (yes with `--raycast`)"
+        if target.startswith("exact / own float") and missed:
+            met += f" ({', '.join(missed)})"
+        out.append(f"| {target} | {measured} | {met} |")
+    return "\n".join(out)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--speed", default="target/release/examples/speed")
+    parser.add_argument("--bin", default="target/release/ccd-exact")
+    parser.add_argument("--class-passes", type=int, default=60)
+    parser.add_argument("--class-reps", type=int, default=101)
+    parser.add_argument("--stability-passes", type=int, default=10)
+    parser.add_argument("--stability-reps", type=int, default=21)
+    parser.add_argument("--line-passes", type=int, default=5)
+    parser.add_argument("--line-reps", type=int, default=101)
+    parser.add_argument("--spawns", type=int, default=300)
+    parser.add_argument("--cpu", default=None, help="the CPU to pin to (default: the last); `none`: no pinning")
+    parser.add_argument("--quick", action="store_true", help="one pass, 3 repetitions, 20 spawns: the plumbing only")
+    args = parser.parse_args()
+    if args.quick:
+        args.class_passes = args.stability_passes = args.line_passes = 1
+        args.class_reps = args.stability_reps = args.line_reps = 3
+        args.spawns = 20
+    args.speed, args.bin = os.path.abspath(args.speed), os.path.abspath(args.bin)
+    os.chdir(ROOT)  # the scene paths are the repository's
+    cpus = sorted(os.sched_getaffinity(0))
+    if args.cpu != "none":
+        cpu = cpus[-1] if args.cpu is None else int(args.cpu)
+        os.sched_setaffinity(0, {cpu})
+    pinned = "unpinned" if args.cpu == "none" else f"pinned to CPU {cpu}"
+    started = time.time()
+    n = lambda count: f"{count} pass{'' if count == 1 else 'es'}"
+    header = (
+        f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, commit `{commit()}`, {host()}; {pinned}. "
+        f"Classes and `static-apart`: {n(args.class_passes)} of `speed --reps {args.class_reps}`, medians of the "
+        f"pass medians; stability: {n(args.stability_passes)} of `--reps {args.stability_reps}`, minima of the pass "
+        f"medians; straight lines: {n(args.line_passes)} of `--reps {args.line_reps}`, minima; the CLI: "
+        f"{args.spawns} spawns."
+    )
+    body = table(*measure(args))
+    print(header + f" ({time.time() - started:.0f} s in all)" + ("  QUICK RUN: not a measurement." if args.quick else ""))
+    print()
+    print(body)
+
+
+if __name__ == "__main__":
+    main()
