@@ -6,15 +6,15 @@
 # `--raycast`), a static pair, and the CLI's whole process against the
 # library call. So that the rows can be read on another host (the owner's
 # question of which host the stability maximum is read on) with one
-# command, the method of session 48 in the repository rather than in
-# a session's notes.
+# command of the repository (docs/table4.md, issue 17, session 49).
 #
 #   bash benches/targets.sh [--class-passes 60] [--stability-passes 10] [--quick] > /tmp/targets.md
 #
-# About 2 minutes with the defaults, pinned to one CPU: run it
-# on an otherwise idle machine. `--quick` checks the plumbing (CI does),
-# its numbers mean nothing. Options: `python3 benches/targets.py --help`.
-# CARGO_FLAGS (e.g. "-j1") is passed to cargo build.
+# About 50 s with the defaults (plus the build), pinned to one CPU; Linux
+# (`sched_setaffinity`, `posix_spawn`). Run it on an otherwise idle
+# machine. `--quick` checks the plumbing (CI does); its numbers mean
+# nothing. Options: `python3 benches/targets.py --help`. CARGO_FLAGS (e.g.
+# "-j1") is passed to cargo build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck disable=SC2086
