@@ -45,6 +45,7 @@ import subprocess
 import sys
 import time
 
+from speed_runs import COLUMNS, speed
 from straight_lines import EXAMPLE_5_1, select_scenes
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -65,8 +66,6 @@ RATIO = 1.3
 STABILITY_MEDIAN, STABILITY_SPREAD = 120.0, 20.0
 LINES_TOTAL, LINES_FIRST = 42.0, 10.0
 STATIC_TOTAL = 5.0
-# `examples/speed`'s columns (after the scene's name), by what they hold.
-COLUMNS = {"exact": 1, "first": 2, "float": 3, "ray": 8, "ray_first": 9}
 
 
 def log(msg):
@@ -80,40 +79,16 @@ def classes():
     return out.stdout.split()
 
 
-def speed(binary, reps, paths):
-    """One run of `examples/speed`: {scene file name: {column: µs, "path":
-    the path that answered --raycast}}. `speed` leaves out a scene it cannot
-    run (and says so on stderr): that ends this script, with its message,
-    rather than a row measured over fewer scenes."""
-    out = subprocess.run(
-        [binary, "--reps", str(reps), *paths], cwd=ROOT, capture_output=True, text=True, check=True
-    )
-    rows = {}
-    for line in out.stdout.splitlines()[1:]:
-        cols = line.split("\t")
-        row = {key: float(cols[i]) for key, i in COLUMNS.items()}
-        row["path"] = cols[10]
-        rows[cols[0]] = row
-    missing = [p for p in paths if os.path.basename(p) not in rows]
-    if missing or any(row["path"] == "error" for row in rows.values()):
-        sys.exit(f"examples/speed did not time {', '.join(missing) or 'every mode'}:\n{out.stderr}")
-    return rows
-
-
 def passes(binary, reps, paths, count, label):
     """`count` runs of `speed` over `paths`: {scene: {column: [µs per pass]}}."""
     runs = {}
     for k in range(count):
         log(f"{label}: pass {k + 1} of {count}")
-        for name, row in speed(binary, reps, paths).items():
+        for name, row in speed(binary, reps, paths, ROOT).items():
             cell = runs.setdefault(name, {"path": row["path"]})
             for key in COLUMNS:
                 cell.setdefault(key, []).append(row[key])
     return runs
-
-
-def median_of(runs, name, key):
-    return statistics.median(runs[name][key])
 
 
 def spawn_ms(binary, args, count):
@@ -186,7 +161,7 @@ def measure(args):
 def table(runs, stability, lines, cli):
     """The markdown rows: target, measured (a miss in bold), met. A row is
     judged on its printed numbers (`within`)."""
-    med = lambda scene, key: median_of(runs, scene, key)
+    med = lambda scene, key: statistics.median(runs[scene][key])
     us = lambda value, bound: bold(f"{value:.1f}", within(value, bound))
     rows = []
 
@@ -272,11 +247,11 @@ def main():
         args.spawns = 20
     args.speed, args.bin = os.path.abspath(args.speed), os.path.abspath(args.bin)
     os.chdir(ROOT)  # the scene paths are the repository's
-    cpus = sorted(os.sched_getaffinity(0))
+    pinned = "unpinned"
     if args.cpu != "none":
-        cpu = cpus[-1] if args.cpu is None else int(args.cpu)
+        cpu = max(os.sched_getaffinity(0)) if args.cpu is None else int(args.cpu)
         os.sched_setaffinity(0, {cpu})
-    pinned = "unpinned" if args.cpu == "none" else f"pinned to CPU {cpu}"
+        pinned = f"pinned to CPU {cpu}"
     started = time.time()
     n = lambda count: f"{count} pass{'' if count == 1 else 'es'}"
     header = (

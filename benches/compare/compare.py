@@ -48,6 +48,7 @@ import flint
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from speed_runs import speed  # noqa: E402  (benches/speed_runs.py)
 from straight_lines import (  # noqa: E402  (benches/straight_lines.py)
     EXAMPLE_5_1,
     SCENE_DIRS,
@@ -102,21 +103,6 @@ def samples_inside(intervals, n=FCL_SAMPLES):
     """How many of FCL's sample instants u = i/(n-1) lie strictly inside one
     of `intervals` (where the bodies' interiors overlap)."""
     return sum(1 for i in range(n) if any(a < i / (n - 1) < b for a, b in intervals))
-
-
-def speed_table(binary, root, paths, reps):
-    """Our median library-call times (µs) per scene file name, from
-    `examples/speed.rs`: {name: (exact total, exact first contact,
-    --raycast total, --raycast first contact, the path that answered
-    --raycast: "raycast", or "exact" where it handed the query on)}."""
-    out = subprocess.run(
-        [binary, "--reps", str(reps), *paths], cwd=root, capture_output=True, text=True, check=True
-    )
-    rows = {}
-    for line in out.stdout.splitlines()[1:]:
-        cols = line.split("\t")
-        rows[cols[0]] = (float(cols[1]), float(cols[2]), float(cols[8]), float(cols[9]), cols[10])
-    return rows
 
 
 def discriminants(binary, root, paths):
@@ -226,19 +212,18 @@ def fmt_us(x):
 
 
 def ours_and_flint(args, path, coeffs):
-    """One pass over a scene for `fastest`: our medians (`speed_table`:
-    exact total and first contact, `--raycast` total and first contact, and
-    the path that answered `--raycast`) and FLINT's on `coeffs`, with its
+    """One pass over a scene for `fastest`: our medians (`speed`: exact
+    total and first contact, `--raycast` total and first contact, and the
+    path that answered `--raycast`) and FLINT's on `coeffs`, with its
     number of distinct roots."""
-    name = os.path.basename(path)
-    ours = speed_table(args.speed, args.root, [path], args.reps)[name]
+    ours = speed(args.speed, args.reps, [path], args.root)[os.path.basename(path)]
     flint_us, n_roots = flint_roots(coeffs, args.reps)
     return {
-        "exact_us": ours[0],
-        "first_us": ours[1],
-        "ray_us": ours[2],
-        "ray_first_us": ours[3],
-        "ray_path": ours[4],
+        "exact_us": ours["exact"],
+        "first_us": ours["first"],
+        "ray_us": ours["ray"],
+        "ray_first_us": ours["ray_first"],
+        "ray_path": ours["path"],
         "n_roots": n_roots,
         "flint_us": flint_us,
     }
